@@ -1,0 +1,172 @@
+#include "case_schema.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace cellsim {
+namespace {
+
+constexpr double kMicro = 1e-6;
+
+ParamSpec real(std::string key, std::string unit, double to_si, double Params::*member,
+               double def, double min, bool min_incl, double max, bool max_incl,
+               std::string meaning, std::string equation) {
+  return {std::move(key), std::move(unit), to_si, member, def, min, max, min_incl, max_incl,
+          std::move(meaning), std::move(equation), ""};
+}
+
+ParamSpec integer(std::string key, std::int64_t Params::*member, double def, double min, double max,
+                  std::string meaning, std::string equation) {
+  return {std::move(key), "1", 1.0, member, def, min, max, true, true,
+          std::move(meaning), std::move(equation), ""};
+}
+
+ParamSpec derived(std::string key, std::string unit, double to_si, std::optional<double> Params::*member,
+                  double min, bool min_incl, double max, bool max_incl,
+                  std::string meaning, std::string equation, std::string auto_rule) {
+  return {std::move(key), std::move(unit), to_si, member, std::nullopt, min, max, min_incl, max_incl,
+          std::move(meaning), std::move(equation), std::move(auto_rule)};
+}
+
+std::vector<ParamSpec> build_specs() {
+  using P = Params;
+  return {
+      // cell
+      real("cell.diameter_um", "um", kMicro, &P::diameter_m, 150, 1, true, 10000, true,
+           "initial cell diameter D0 = 2R (Table 3: R = 75 um)", "model §1, Eq 6"),
+      integer("cell.n_wall", &P::n_wall, 2067, 12, 200000,
+              "number of wall particles N_w (200 um cell: 2516)", "model §1"),
+      integer("cell.n_fluid", &P::n_fluid, 3082, 1, 1000000,
+              "number of fluid particles N_f (200 um cell: 3708)", "model §1, Eq 11"),
+      real("cell.turgor_kPa", "kPa", 1e3, &P::turgor_Pa, 200, 0, true, 10000, true,
+           "fresh turgor pressure P_T0; P_T(X) = P_T0 X", "Eq 7, model §5"),
+      real("cell.fluid_density_kg_m3", "kg/m^3", 1.0, &P::fluid_density_kg_m3, 1000, 0, false, 1e5, true,
+           "reference fluid density rho0; fluid mass m_f = rho0 (4/3) pi R^3 / N_f", "Eq 7, model §1"),
+      real("cell.wall_mass_fraction", "1", 1.0, &P::wall_mass_fraction, 0.1, 0, false, 10, true,
+           "total wall mass / total fluid mass (Table 3: 1.767e-10 / 1.767e-9)", "model §1"),
+      derived("cell.fill_gap_um", "um", kMicro, &P::fill_gap_m, 0, true, 1000, true,
+              "fluid particles fill the sphere of radius R - fill_gap", "model §1", "0.7 r0"),
+      // fluid
+      real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
+           "dynamic viscosity mu", "Eq 4"),
+      real("fluid.bulk_modulus_MPa", "MPa", 1e6, &P::bulk_modulus_Pa, 20, 0, false, 1e5, true,
+           "fluid compression modulus K", "Eq 7"),
+      real("fluid.eos_exponent", "1", 1.0, &P::eos_exponent, 7, 1, true, 15, true,
+           "exponent of the Tait equation of state", "Eq 7"),
+      derived("fluid.h0_um", "um", kMicro, &P::h0_m, 0, false, 1000, true,
+              "initial SPH smoothing length h0", "Eq 5, Eq 6",
+              "6.8 um x dx / dx_ref (dx: fluid lattice spacing; dx_ref: that of the default 150 um cell)"),
+      // wall
+      real("wall.G_MPa", "MPa", 1e6, &P::G_Pa, 18, 0, true, 1e5, true,
+           "cell wall shear modulus G", "Eq 15"),
+      real("wall.thickness_um", "um", kMicro, &P::thickness_m, 6, 0, true, 1000, true,
+           "cell wall thickness t0", "Eq 15"),
+      real("wall.damping_N_s_m", "N s/m", 1.0, &P::damping_N_s_m, 5e-6, 0, true, 1, true,
+           "wall bond damping constant gamma", "Eq 16"),
+      real("wall.bending_stiffness_J", "J", 1.0, &P::bending_stiffness_J, 1e-10, 0, true, 1e-3, true,
+           "wall bending stiffness k_b", "Eq 20"),
+      real("wall.contraction_stiffness_N_m", "N/m", 1.0, &P::contraction_stiffness_N_m, 1e4, 0, true, 1e9, true,
+           "wall contraction force coefficient k_wc", "Eq 21"),
+      real("wall.contraction_ratio", "1", 1.0, &P::contraction_ratio, 0.4, 0, true, 1, false,
+           "c = a/b: fully dried rest length is l0 (1 - c)", "Eq 21"),
+      // coupling
+      derived("coupling.r0_um", "um", kMicro, &P::r0_m, 0, false, 1000, true,
+              "wall-fluid Lennard-Jones equilibrium gap r0", "Eqs 12-13, 17-19",
+              "1.8 x the largest wall-triangle circumradius (8.1 um for the default mesh)"),
+      real("coupling.repulsion_f0_N_m", "N m", 1.0, &P::repulsion_f0_N_m, 5e-12, 0, true, 1, true,
+           "LJ contact strength for r < r0 (Table 3 prints N/m; N m gives a force)", "Eqs 12, 17-18"),
+      real("coupling.attraction_f0_N_m", "N m", 1.0, &P::attraction_f0_N_m, 1e-11, 0, true, 1, true,
+           "LJ contact strength for r0 <= r < r_c", "Eqs 13, 19"),
+      real("coupling.attraction_cutoff_over_h", "1", 1.0, &P::attraction_cutoff_over_h, 2, 0, true, 2, true,
+           "attraction cut-off r_c in units of the smoothing length h", "Eqs 13, 19"),
+      // drying
+      real("drying.dryness", "1", 1.0, &P::dryness, 1.0, 0, false, 1, true,
+           "normalised moisture content X/X0 (1: fresh)", "Eq 21, model §5"),
+      integer("drying.steps", &P::drying_steps, 50000, 0, 1e9, "time steps of the drying stage", "model §5"),
+      real("drying.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::drying_Lp_m_per_s_Pa, 2.5e-6, 0, true, 1, true,
+           "wall permeability L_p during drying (raised to reach steady state fast)", "Eq 11"),
+      real("drying.ramp_time_us", "us", kMicro, &P::ramp_time_s, 20, 0, true, 1e6, true,
+           "time over which L_ref ramps (smoothstep) from l0 to L_ref(X)", "Eq 21, model §5"),
+      // compression
+      integer("compression.steps", &P::compression_steps, 25000, 0, 1e9,
+              "maximum time steps of the compression stage", "model §6"),
+      real("compression.plate_speed_m_s", "m/s", 1.0, &P::plate_speed_m_s, 1, 0, false, 1000, true,
+           "downward speed of the top plate", "model §6"),
+      real("compression.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::compression_Lp_m_per_s_Pa, 1e-12, 0, true, 1, true,
+           "wall permeability L_p during compression", "Eq 11"),
+      real("compression.gap_um", "um", kMicro, &P::plate_gap_m, 2, 0, true, 1000, true,
+           "initial gap between the top plate's reach and the cell", "model §6"),
+      real("compression.plate_range_um", "um", kMicro, &P::plate_range_m, 3, 0, false, 100, true,
+           "plate-wall interaction range r_pw", "Eq 22"),
+      real("compression.plate_stiffness_N_m", "N/m", 1.0, &P::plate_stiffness_N_m, 1e3, 0, false, 1e9, true,
+           "plate-wall force coefficient k_pw", "Eq 22"),
+      real("compression.plate_length_um", "um", kMicro, &P::plate_length_m, 150, 0, false, 1e5, true,
+           "plate footprint along x (the plate stress divides by length x width)", "Eq 22, model §8"),
+      real("compression.plate_width_um", "um", kMicro, &P::plate_width_m, 150, 0, false, 1e5, true,
+           "plate footprint along y", "Eq 22, model §8"),
+      derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
+              "stop compression when the nominal strain reaches this value", "model §6",
+              "none: run all compression.steps"),
+      // time
+      real("time.dt_ns", "ns", 1e-9, &P::dt_s, 1, 0, false, 1000, true,
+           "time step (checked against the CFL and wall-spring limits every step)", "model §7"),
+      // output
+      integer("output.record_every", &P::record_every, 100, 1, 1e9,
+              "steps between time-series records", "model §8"),
+      integer("output.snapshot_every", &P::snapshot_every, 5000, 0, 1e9,
+              "steps between particle snapshots (0: first and last state only)", "output"),
+      real("output.progress_interval_s", "s", 1.0, &P::progress_interval_s, 5, 0, true, 1e6, true,
+           "wall-clock seconds between progress lines on stderr (0: every record)", "output"),
+  };
+}
+
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs = build_specs();
+  return specs;
+}
+
+const ParamSpec* find_param(const std::string& key) {
+  for (const auto& s : param_specs())
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+bool is_integer(const ParamSpec& spec) {
+  return std::holds_alternative<std::int64_t Params::*>(spec.member);
+}
+
+bool is_optional(const ParamSpec& spec) {
+  return std::holds_alternative<std::optional<double> Params::*>(spec.member);
+}
+
+std::string describe_range(const ParamSpec& spec) {
+  std::string r;
+  if (std::isfinite(spec.min)) r += format_number(spec.min) + (spec.min_inclusive ? " <= " : " < ");
+  r += "value";
+  if (std::isfinite(spec.max)) r += (spec.max_inclusive ? " <= " : " < ") + format_number(spec.max);
+  if (is_integer(spec)) r += ", an integer";
+  return r;
+}
+
+std::string reference_markdown() {
+  std::ostringstream s;
+  s << "| key | unit | default | allowed | meaning | equation |\n"
+       "|---|---|---|---|---|---|\n";
+  for (const auto& p : param_specs()) {
+    const std::string def = p.default_value ? format_number(*p.default_value) : "auto: " + p.auto_rule;
+    s << "| `" << p.key << "` | " << p.unit << " | " << def << " | " << describe_range(p) << " | "
+      << p.meaning << " | " << p.equation << " |\n";
+  }
+  return s.str();
+}
+
+}  // namespace cellsim

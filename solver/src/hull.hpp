@@ -1,0 +1,15 @@
+#pragma once
+// Convex hull of points on a sphere, triangulated by Qhull (model.md §1).
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace cellsim {
+
+// Triangles (vertex indices into the columns of points), oriented outward from the centroid.
+// Throws InputError if Qhull fails or some point is not a hull vertex.
+std::vector<std::array<int, 3>> convex_hull_triangles(const Eigen::Matrix3Xd& points);
+
+}  // namespace cellsim

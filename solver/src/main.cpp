@@ -1,0 +1,110 @@
+// cellsim: one apple parenchyma cell, dried then compressed (Rathnayaka et al. 2020).
+// JSON case in, HDF5 (+ XDMF) out. See README.md and docs/case-reference.md.
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "case_file.hpp"
+#include "case_schema.hpp"
+#include "cell.hpp"
+#include "errors.hpp"
+#include "measures.hpp"
+#include "run.hpp"
+#include "version.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--quiet]\n"
+    "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
+    "  cellsim params                                    the case keys (Markdown table)\n"
+    "  cellsim outputs                                   the time series written (Markdown table)\n"
+    "  cellsim --help | --version\n"
+    "\n"
+    "Keys use units in their names, e.g. --set drying.dryness=0.5 --set wall.G_MPa=0.18.\n"
+    "Exit codes: 0 success, 2 bad input (nothing written), 3 numerical failure (OUT.partial kept).\n";
+
+struct Args {
+  std::string command, case_path, output_path;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (words.empty()) throw cellsim::InputError("no command given\n" + std::string(kUsage));
+  a.command = words[0];
+  for (std::size_t i = 1; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    const auto value = [&](const std::string& flag) {
+      if (i + 1 >= words.size()) throw cellsim::InputError(flag + " needs a value");
+      return words[++i];
+    };
+    if (w == "-o" || w == "--output") a.output_path = value(w);
+    else if (w == "--set") a.overrides.push_back(value(w));
+    else if (w.rfind("--set=", 0) == 0) a.overrides.push_back(w.substr(6));
+    else if (w == "--quiet") a.quiet = true;
+    else if (!w.empty() && w[0] == '-') throw cellsim::InputError("unknown option '" + w + "'\n" + kUsage);
+    else if (a.case_path.empty()) a.case_path = w;
+    else throw cellsim::InputError("unexpected argument '" + w + "'");
+  }
+  return a;
+}
+
+cellsim::Params load(const Args& a) {
+  if (a.case_path.empty()) throw cellsim::InputError("'" + a.command + "' needs a case file (CASE.json)");
+  nlohmann::json doc = cellsim::read_case_file(a.case_path);
+  for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
+  return cellsim::validate_case(doc);
+}
+
+int dispatch(int argc, char** argv) {
+  const Args a = parse(argc, argv);
+  if (a.command == "--help" || a.command == "-h" || a.command == "help") {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (a.command == "--version") {
+    std::cout << "cellsim " << cellsim::kVersion << " (git " << cellsim::kGitRevision << ")\n";
+    return 0;
+  }
+  if (a.command == "params") {
+    std::cout << cellsim::reference_markdown();
+    return 0;
+  }
+  if (a.command == "outputs") {
+    std::cout << cellsim::output_reference_markdown();
+    return 0;
+  }
+  if (a.command == "validate") {
+    cellsim::Params p = load(a);
+    cellsim::build_cell(p);  // resolves derived values and checks the geometry can be built
+    std::cout << cellsim::case_to_json(p).dump(2) << "\n";
+    return 0;
+  }
+  if (a.command == "run") {
+    if (a.output_path.empty()) throw cellsim::InputError("'run' needs an output file: -o OUT.h5");
+    cellsim::run_case(load(a), {a.output_path, a.quiet});
+    return 0;
+  }
+  throw cellsim::InputError("unknown command '" + a.command + "'\n" + kUsage);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (const cellsim::InputError& e) {
+    std::cerr << "cellsim: error: " << e.what() << "\n";
+    return cellsim::kExitInputError;
+  } catch (const cellsim::NumericalFailure& e) {
+    std::cerr << "cellsim: numerical failure: " << e.what() << "\n";
+    return cellsim::kExitNumericalFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "cellsim: internal error: " << e.what() << "\n";
+    return 1;
+  }
+}

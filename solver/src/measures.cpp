@@ -1,0 +1,138 @@
+#include "measures.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+namespace cellsim {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}
+
+const std::vector<Quantity>& quantities() {
+  static const std::vector<Quantity> q = {
+      {"time_s", "s", "simulated time since the start of drying", &Record::time_s},
+      {"stage", "1", "0 drying, 1 compression", &Record::stage},
+      {"step", "1", "time steps done since the start of drying", &Record::step},
+      {"fluid_mass_kg", "kg", "total fluid mass (changes by Eq 11)", &Record::fluid_mass_kg},
+      {"fluid_mass_ratio", "1", "M_f / M_f0, achieved moisture ratio", &Record::fluid_mass_ratio},
+      {"mean_pressure_Pa", "Pa", "arithmetic mean of the fluid particles' EOS pressure (Eq 7)",
+       &Record::mean_pressure_Pa},
+      {"area_m2", "m^2", "wall area: sum of the wall triangles' areas", &Record::area_m2},
+      {"volume_m3", "m^3", "enclosed volume: sum of signed tetrahedra (origin, triangle)", &Record::volume_m3},
+      {"equivalent_diameter_m", "m", "diameter of the sphere of the enclosed volume (D in Eq 6)",
+       &Record::equivalent_diameter_m},
+      {"smoothing_length_m", "m", "SPH smoothing length h (Eq 6)", &Record::smoothing_length_m},
+      {"cell_height_m", "m", "H: max z - min z of the wall particles", &Record::cell_height_m},
+      {"equatorial_radius_m", "m", "largest horizontal distance of a wall particle from the wall centroid's axis",
+       &Record::equatorial_radius_m},
+      {"kinetic_energy_fluid_J", "J", "sum of m v^2 / 2 over fluid particles", &Record::kinetic_energy_fluid_J},
+      {"kinetic_energy_wall_J", "J", "sum of m v^2 / 2 over wall particles", &Record::kinetic_energy_wall_J},
+      {"wall_strain_mean", "1", "mean bond strain (l - l0) / l0", &Record::wall_strain_mean},
+      {"plate_top_z_m", "m", "height of the top plate (NaN before compression)", &Record::plate_top_z_m},
+      {"plate_bottom_z_m", "m", "height of the bottom plate (NaN before compression)", &Record::plate_bottom_z_m},
+      {"plate_force_top_N", "N", "force of the wall on the top plate, upward positive (Eq 22 reaction)",
+       &Record::plate_force_top_N},
+      {"plate_force_bottom_N", "N", "force of the wall on the bottom plate, downward positive",
+       &Record::plate_force_bottom_N},
+      {"contact_area_m2", "m^2", "area (a third of each adjacent triangle) of wall particles within r_pw of a plate",
+       &Record::contact_area_m2},
+      {"contact_count", "1", "wall particles within r_pw of a plate", &Record::contact_count},
+      {"nominal_strain", "1", "(H_c - H) / H_c, H_c the cell height when compression starts",
+       &Record::nominal_strain},
+      {"plate_strain", "1", "top-plate travel since first contact / H_c", &Record::plate_strain},
+      {"plate_stress_Pa", "Pa", "F_top / (plate length x width)", &Record::plate_stress_Pa},
+      {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
+      {"contact_stress_Pa", "Pa", "F_top / contact area (NaN without contact)", &Record::contact_stress_Pa},
+  };
+  return q;
+}
+
+double wall_area(const Eigen::Matrix3Xd& x, const WallMesh& mesh) {
+  double area = 0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 * (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
+  return area;
+}
+
+double enclosed_volume(const Eigen::Matrix3Xd& x, const WallMesh& mesh) {
+  double six_v = 0;
+  for (const auto& t : mesh.triangles) six_v += x.col(t[0]).dot(x.col(t[1]).cross(x.col(t[2])));
+  return six_v / 6.0;
+}
+
+Record measure(const State& s, const WallMesh& mesh, const Params& p, const EquationOfState& eos) {
+  Record r{};
+  const auto& f = s.fluid;
+  const auto& w = s.wall;
+  r.time_s = s.time_s;
+  r.stage = static_cast<double>(s.stage);
+  r.step = static_cast<double>(s.step);
+  r.fluid_mass_kg = f.m.sum();
+  r.fluid_mass_ratio = r.fluid_mass_kg / s.initial_fluid_mass_kg;
+  double pressure_sum = 0;
+  for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
+  r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;
+  r.area_m2 = wall_area(w.x, mesh);
+  r.volume_m3 = enclosed_volume(w.x, mesh);
+  r.equivalent_diameter_m = std::cbrt(6.0 * r.volume_m3 / M_PI);
+  r.smoothing_length_m = s.smoothing_length_m;
+  r.cell_height_m = w.x.row(2).maxCoeff() - w.x.row(2).minCoeff();
+  const Eigen::Vector3d centroid = w.x.rowwise().mean();
+  r.equatorial_radius_m = (w.x.topRows<2>().colwise() - centroid.head<2>()).colwise().norm().maxCoeff();
+  r.kinetic_energy_fluid_J = 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
+  r.kinetic_energy_wall_J = 0.5 * w.mass_kg * w.v.squaredNorm();
+  double strain_sum = 0;
+  for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
+    const double l = (w.x.col(mesh.bonds[b][0]) - w.x.col(mesh.bonds[b][1])).norm();
+    strain_sum += (l - mesh.rest_length_m[b]) / mesh.rest_length_m[b];
+  }
+  r.wall_strain_mean = mesh.bonds.empty() ? 0.0 : strain_sum / static_cast<double>(mesh.bonds.size());
+
+  const Plates& pl = s.plates;
+  if (!pl.active) {
+    r.plate_top_z_m = r.plate_bottom_z_m = r.plate_force_top_N = r.plate_force_bottom_N = kNaN;
+    r.contact_area_m2 = r.contact_count = kNaN;
+    r.nominal_strain = r.plate_strain = r.plate_stress_Pa = r.section_stress_Pa = r.contact_stress_Pa = kNaN;
+    return r;
+  }
+  r.plate_top_z_m = pl.top_z_m;
+  r.plate_bottom_z_m = pl.bottom_z_m;
+  r.plate_force_top_N = pl.force_top_N;
+  r.plate_force_bottom_N = pl.force_bottom_N;
+  // Contact area: each wall particle within r_pw of a plate owns a third of its triangles' area.
+  Eigen::VectorXd vertex_area = Eigen::VectorXd::Zero(w.size());
+  for (const auto& t : mesh.triangles) {
+    const double a = 0.5 * (w.x.col(t[1]) - w.x.col(t[0])).cross(w.x.col(t[2]) - w.x.col(t[0])).norm();
+    for (int v : t) vertex_area[v] += a / 3.0;
+  }
+  double contact_area = 0;
+  int contacts = 0;
+  for (Eigen::Index k = 0; k < w.size(); ++k) {
+    const double z = w.x(2, k);
+    if (pl.top_z_m - z < p.plate_range_m || z - pl.bottom_z_m < p.plate_range_m) {
+      contact_area += vertex_area[k];
+      ++contacts;
+    }
+  }
+  r.contact_area_m2 = contact_area;
+  r.contact_count = contacts;
+  const double hc = pl.contact_height_m;
+  r.nominal_strain = (hc - r.cell_height_m) / hc;
+  r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
+  r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
+  r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
+  r.contact_stress_Pa = contact_area > 0 ? pl.force_top_N / contact_area : kNaN;
+  return r;
+}
+
+std::string output_reference_markdown() {
+  std::ostringstream s;
+  s << "| dataset | unit | definition |\n|---|---|---|\n";
+  for (const auto& q : quantities()) s << "| `/timeseries/" << q.name << "` | " << q.unit << " | " << q.definition << " |\n";
+  return s.str();
+}
+
+}  // namespace cellsim

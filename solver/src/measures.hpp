@@ -1,0 +1,41 @@
+#pragma once
+// What is measured every record (model.md §8): one struct, and one table that names each
+// quantity with its unit and definition for the output file and docs/output-reference.md.
+#include <string>
+#include <vector>
+
+#include "eos.hpp"
+#include "params.hpp"
+#include "state.hpp"
+#include "wall_mesh.hpp"
+
+namespace cellsim {
+
+struct Record {
+  double time_s, stage, step;
+  double fluid_mass_kg, fluid_mass_ratio, mean_pressure_Pa;
+  double area_m2, volume_m3, equivalent_diameter_m, smoothing_length_m;
+  double cell_height_m, equatorial_radius_m;
+  double kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
+  double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
+  double contact_area_m2, contact_count;
+  double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa;
+};
+
+struct Quantity {
+  std::string name;  // dataset name under /timeseries
+  std::string unit;
+  std::string definition;
+  double Record::*member;
+};
+const std::vector<Quantity>& quantities();
+
+// Closed-surface measures from outward triangles.
+double wall_area(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
+double enclosed_volume(const Eigen::Matrix3Xd& x, const WallMesh& mesh);  // signed tetrahedra
+
+Record measure(const State& s, const WallMesh& mesh, const Params& p, const EquationOfState& eos);
+
+std::string output_reference_markdown();
+
+}  // namespace cellsim

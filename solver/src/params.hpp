@@ -1,0 +1,65 @@
+#pragma once
+// Every parameter of a case, in SI units, after reading and resolving the JSON case file.
+// The JSON keys (human units, e.g. wall.G_MPa) map onto these members in case_schema.cpp.
+#include <cstdint>
+#include <optional>
+
+namespace cellsim {
+
+struct Params {
+  // cell geometry and particles (model.md §1)
+  double diameter_m = 0;                // D0 = 2R
+  std::int64_t n_wall = 0;              // N_w
+  std::int64_t n_fluid = 0;             // N_f
+  double turgor_Pa = 0;                 // fresh turgor P_T0 (Table 3)
+  double fluid_density_kg_m3 = 0;       // rho0
+  double wall_mass_fraction = 0;        // wall mass / fluid mass (Table 3: 0.1)
+  std::optional<double> fill_gap_m;     // fluid fill radius is R - fill_gap (auto: 0.7 r0)
+
+  // fluid, Table 1
+  double viscosity_Pa_s = 0;            // mu, Eq 4
+  double bulk_modulus_Pa = 0;           // K, Eq 7
+  double eos_exponent = 0;              // 7 in Eq 7
+  std::optional<double> h0_m;           // initial smoothing length, Eq 6 (auto: 6.8 um * dx/dx_ref)
+
+  // wall, Table 2
+  double G_Pa = 0;                      // shear modulus, Eq 15
+  double thickness_m = 0;               // t0, Eq 15
+  double damping_N_s_m = 0;             // gamma, Eq 16
+  double bending_stiffness_J = 0;       // k_b, Eq 20
+  double contraction_stiffness_N_m = 0; // k_wc, Eq 21
+  double contraction_ratio = 0;         // c = a/b, Eq 21
+
+  // wall-fluid Lennard-Jones coupling, Eqs 12-13, 17-19
+  std::optional<double> r0_m;           // LJ equilibrium gap (auto: 1.8 x largest triangle circumradius)
+  double repulsion_f0_N_m = 0;          // f0 for r < r0
+  double attraction_f0_N_m = 0;         // f0 for r0 <= r < r_c
+  double attraction_cutoff_over_h = 0;  // r_c / h
+
+  // drying stage, model.md §5
+  double dryness = 0;                   // X/X0
+  std::int64_t drying_steps = 0;
+  double drying_Lp_m_per_s_Pa = 0;      // L_p, Eq 11
+  double ramp_time_s = 0;               // smoothstep ramp of L_ref, model.md §5
+
+  // compression stage, model.md §6 and Eq 22
+  std::int64_t compression_steps = 0;
+  double plate_speed_m_s = 0;
+  double compression_Lp_m_per_s_Pa = 0;
+  double plate_gap_m = 0;               // initial gap of the top plate above the cell
+  double plate_range_m = 0;             // r_pw, Eq 22
+  double plate_stiffness_N_m = 0;       // k_pw, Eq 22
+  double plate_length_m = 0;            // footprint in x
+  double plate_width_m = 0;             // footprint in y
+  std::optional<double> end_strain;     // stop compression at this nominal strain
+
+  // time integration, model.md §7
+  double dt_s = 0;
+
+  // output
+  std::int64_t record_every = 0;        // steps between time-series records
+  std::int64_t snapshot_every = 0;      // steps between particle snapshots (0: first and last only)
+  double progress_interval_s = 0;       // wall-clock seconds between progress lines on stderr
+};
+
+}  // namespace cellsim

@@ -1,0 +1,161 @@
+#include "result_file.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "errors.hpp"
+#include "version.hpp"
+
+namespace cellsim {
+namespace {
+
+std::vector<double> flat(const Eigen::Matrix3Xd& m) { return {m.data(), m.data() + m.size()}; }
+std::vector<double> flat(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+hsize_t cols(const Eigen::Matrix3Xd& m) { return static_cast<hsize_t>(m.cols()); }
+
+void write_text_file(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write '" + tmp + "'");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+ResultFile::ResultFile(const std::string& final_path)
+    : final_path_(final_path), partial_path_(final_path + ".partial") {
+  const auto dir = std::filesystem::path(final_path).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw InputError("output '" + final_path + "': directory '" + dir.string() + "' does not exist");
+  if (std::filesystem::is_directory(final_path))
+    throw InputError("output '" + final_path + "' is a directory; give a file name such as run.h5");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
+  try {
+    file_ = h5::create_file(partial_path_);
+  } catch (const std::exception&) {
+    throw InputError("output '" + final_path + "': cannot create '" + partial_path_ + "' (not writable?)");
+  }
+  h5::set_attr(file_.id(), "completed", std::int64_t{0});
+}
+
+ResultFile::~ResultFile() = default;
+
+void ResultFile::write_header(const nlohmann::json& resolved_case) {
+  const hid_t root = file_.id();
+  h5::set_attr(root, "case_json", resolved_case.dump(2));
+  h5::set_attr(root, "solver", std::string("cellsim"));
+  h5::set_attr(root, "solver_version", std::string(kVersion));
+  h5::set_attr(root, "git_revision", std::string(kGitRevision));
+  h5::set_attr(root, "units", std::string("SI throughout; each dataset carries a 'unit' attribute"));
+  snapshots_ = h5::create_group(root, "snapshots");
+}
+
+void ResultFile::write_mesh(const WallMesh& mesh, long n_fluid) {
+  h5::Handle g = h5::create_group(file_.id(), "mesh");
+  std::vector<std::int32_t> tri, bonds, hinges, fluid_vertices;
+  for (const auto& t : mesh.triangles) tri.insert(tri.end(), t.begin(), t.end());
+  for (const auto& b : mesh.bonds) bonds.insert(bonds.end(), b.begin(), b.end());
+  for (const auto& h : mesh.hinges) hinges.insert(hinges.end(), {h.a, h.b, h.c, h.d});
+  for (long i = 0; i < n_fluid; ++i) fluid_vertices.push_back(static_cast<std::int32_t>(i));
+  h5::write(g.id(), "triangles", tri, {mesh.triangles.size(), 3});
+  h5::write(g.id(), "bonds", bonds, {mesh.bonds.size(), 2});
+  h5::write(g.id(), "hinges", hinges, {mesh.hinges.size(), 4});
+  h5::write(g.id(), "bond_rest_length", mesh.rest_length_m, {mesh.rest_length_m.size()});
+  h5::write(g.id(), "fluid_vertices", fluid_vertices, {fluid_vertices.size(), 1});
+  h5::set_dataset_attr(g.id(), "triangles", "description", "wall particle indices, outward (counter-clockwise)");
+  h5::set_dataset_attr(g.id(), "hinges", "description", "edge (a, b) shared by triangles (a, b, c) and (b, a, d)");
+  h5::set_dataset_attr(g.id(), "bond_rest_length", "unit", "m");
+  n_triangles_ = static_cast<long>(mesh.triangles.size());
+  n_fluid_ = n_fluid;
+}
+
+void ResultFile::write_snapshot(const State& s, const EquationOfState& eos) {
+  std::ostringstream name;
+  name << std::setw(9) << std::setfill('0') << s.step;
+  h5::Handle g = h5::create_group(snapshots_.id(), name.str());
+  h5::set_attr(g.id(), "time_s", s.time_s);
+  h5::set_attr(g.id(), "step", static_cast<std::int64_t>(s.step));
+  h5::set_attr(g.id(), "stage", static_cast<std::int64_t>(s.stage));
+  h5::set_attr(g.id(), "plate_top_z_m", s.plates.active ? s.plates.top_z_m : std::nan(""));
+  h5::set_attr(g.id(), "plate_bottom_z_m", s.plates.active ? s.plates.bottom_z_m : std::nan(""));
+  const auto& f = s.fluid;
+  const auto& w = s.wall;
+  Eigen::VectorXd pressure(f.size());
+  for (Eigen::Index i = 0; i < f.size(); ++i) pressure[i] = eos.pressure(f.rho[i]);
+  h5::write(g.id(), "wall_positions", flat(w.x), {cols(w.x), 3});
+  h5::write(g.id(), "wall_velocities", flat(w.v), {cols(w.v), 3});
+  h5::write(g.id(), "fluid_positions", flat(f.x), {cols(f.x), 3});
+  h5::write(g.id(), "fluid_velocities", flat(f.v), {cols(f.v), 3});
+  h5::write(g.id(), "fluid_mass", flat(f.m), {static_cast<hsize_t>(f.size())});
+  h5::write(g.id(), "fluid_density", flat(f.rho), {static_cast<hsize_t>(f.size())});
+  h5::write(g.id(), "fluid_pressure", flat(pressure), {static_cast<hsize_t>(f.size())});
+  for (const char* d : {"wall_positions", "fluid_positions"}) h5::set_dataset_attr(g.id(), d, "unit", "m");
+  for (const char* d : {"wall_velocities", "fluid_velocities"}) h5::set_dataset_attr(g.id(), d, "unit", "m/s");
+  h5::set_dataset_attr(g.id(), "fluid_mass", "unit", "kg");
+  h5::set_dataset_attr(g.id(), "fluid_density", "unit", "kg/m^3");
+  h5::set_dataset_attr(g.id(), "fluid_pressure", "unit", "Pa");
+  n_wall_ = static_cast<long>(w.size());
+  snapshot_list_.push_back({"/snapshots/" + name.str(), s.time_s});
+}
+
+void ResultFile::write_timeseries(const std::vector<Record>& records) {
+  h5::Handle g = h5::create_group(file_.id(), "timeseries");
+  for (const auto& q : quantities()) {
+    std::vector<double> column;
+    column.reserve(records.size());
+    for (const auto& r : records) column.push_back(r.*q.member);
+    h5::write(g.id(), q.name, column, {column.size()});
+    h5::set_dataset_attr(g.id(), q.name, "unit", q.unit);
+    h5::set_dataset_attr(g.id(), q.name, "definition", q.definition);
+  }
+}
+
+void write_state(hid_t parent, const State& s) {
+  h5::Handle g = h5::create_group(parent, "state");
+  h5::set_attr(g.id(), "time_s", s.time_s);
+  h5::set_attr(g.id(), "step", static_cast<std::int64_t>(s.step));
+  h5::set_attr(g.id(), "stage", static_cast<std::int64_t>(s.stage));
+  h5::set_attr(g.id(), "smoothing_length_m", s.smoothing_length_m);
+  h5::set_attr(g.id(), "initial_fluid_mass_kg", s.initial_fluid_mass_kg);
+  h5::write(g.id(), "wall_positions", flat(s.wall.x), {cols(s.wall.x), 3});
+  h5::write(g.id(), "wall_velocities", flat(s.wall.v), {cols(s.wall.v), 3});
+  h5::write(g.id(), "fluid_positions", flat(s.fluid.x), {cols(s.fluid.x), 3});
+  h5::write(g.id(), "fluid_velocities", flat(s.fluid.v), {cols(s.fluid.v), 3});
+  h5::write(g.id(), "fluid_mass", flat(s.fluid.m), {static_cast<hsize_t>(s.fluid.size())});
+  h5::write(g.id(), "fluid_density", flat(s.fluid.rho), {static_cast<hsize_t>(s.fluid.size())});
+}
+
+void ResultFile::complete(const std::vector<Record>& records, const State& final_state) {
+  write_timeseries(records);
+  write_state(file_.id(), final_state);
+  h5::set_attr(file_.id(), "completed", std::int64_t{1});  // last: the file is whole
+  snapshots_.close();
+  file_.close();
+  std::filesystem::rename(partial_path_, final_path_);
+  const std::string h5_name = std::filesystem::path(final_path_).filename().string();
+  const std::string stem = final_path_.substr(0, final_path_.size() - std::filesystem::path(final_path_).extension().string().size());
+  write_text_file(stem + ".wall.xdmf", xdmf_text("wall", h5_name, snapshot_list_, n_wall_, n_triangles_));
+  write_text_file(stem + ".fluid.xdmf", xdmf_text("fluid", h5_name, snapshot_list_, n_fluid_, 0));
+  done_ = true;
+}
+
+void ResultFile::fail(const std::vector<Record>& records, const std::string& message) {
+  if (done_ || file_.id() < 0) return;
+  try {
+    write_timeseries(records);
+  } catch (const std::exception&) {
+    // A failure while the time series group exists already: keep the message below anyway.
+  }
+  h5::set_attr(file_.id(), "failure", message);
+  snapshots_.close();
+  file_.close();
+  done_ = true;
+}
+
+}  // namespace cellsim

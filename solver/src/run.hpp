@@ -1,0 +1,18 @@
+#pragma once
+// Running a case: build the cell, dry, compress, record, write the result file.
+#include <string>
+
+#include "params.hpp"
+
+namespace cellsim {
+
+struct RunOptions {
+  std::string output_path;
+  bool quiet = false;  // no progress lines on stderr
+};
+
+// Throws InputError before writing anything under the output's final name, NumericalFailure
+// after leaving OUT.partial marked incomplete.
+void run_case(Params p, const RunOptions& options);
+
+}  // namespace cellsim

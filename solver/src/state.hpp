@@ -1,0 +1,49 @@
+#pragma once
+// The evolving state of one run: particles as structure-of-arrays, indices stable for the whole run.
+#include <cstdint>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+
+namespace cellsim {
+
+enum class Stage : int { Drying = 0, Compression = 1 };
+
+struct FluidParticles {
+  Eigen::Matrix3Xd x, v;   // position [m], velocity [m/s]
+  Eigen::VectorXd m;       // mass [kg] (changes by Eq 11)
+  Eigen::VectorXd rho;     // density [kg/m^3] (continuity, Eqs 9-10)
+  Eigen::Index size() const { return x.cols(); }
+};
+
+struct WallParticles {
+  Eigen::Matrix3Xd x, v;   // position [m], velocity [m/s]
+  double mass_kg = 0;      // equal for every wall particle
+  Eigen::Index size() const { return x.cols(); }
+};
+
+struct Plates {
+  bool active = false;     // only during compression
+  double bottom_z_m = 0;   // plane of the fixed bottom plate
+  double top_z_m = 0;      // plane of the moving top plate
+  double top_start_z_m = 0;
+  double force_top_N = 0;  // reaction on the plate (positive: pushed away from the cell)
+  double force_bottom_N = 0;
+  int contacts = 0;        // wall particles within r_pw of either plate
+  double contact_height_m = 0;  // cell height when compression starts, H_c
+  double first_contact_top_z_m = 0;  // top plate position at first contact (NaN before)
+};
+
+struct State {
+  FluidParticles fluid;
+  WallParticles wall;
+  Plates plates;
+  Stage stage = Stage::Drying;
+  std::int64_t step = 0;          // steps done in the whole run
+  std::int64_t stage_step = 0;    // steps done in the current stage
+  double time_s = 0;
+  double smoothing_length_m = 0;  // h, Eq 6
+  double initial_fluid_mass_kg = 0;
+};
+
+}  // namespace cellsim

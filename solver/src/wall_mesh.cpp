@@ -1,0 +1,62 @@
+#include "wall_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "errors.hpp"
+
+namespace cellsim {
+
+Eigen::Matrix3Xd fibonacci_sphere(int n, double radius) {
+  Eigen::Matrix3Xd x(3, n);
+  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden_angle * i;
+    x.col(i) << radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z;
+  }
+  return x;
+}
+
+WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::array<int, 3>> triangles) {
+  WallMesh mesh;
+  // Each directed edge (u -> v) of an outward triangle; its twin (v -> u) lives in the neighbour.
+  std::map<std::pair<int, int>, int> opposite;  // directed edge -> vertex opposite it in its triangle
+  for (const auto& t : triangles)
+    for (int e = 0; e < 3; ++e) {
+      const int u = t[e], v = t[(e + 1) % 3], w = t[(e + 2) % 3];
+      if (!opposite.emplace(std::make_pair(u, v), w).second)
+        throw InputError("wall triangulation is not a closed oriented surface (edge " + std::to_string(u) + "-" +
+                         std::to_string(v) + " appears twice)");
+    }
+  for (const auto& [edge, c] : opposite) {
+    const auto [a, b] = edge;
+    if (a > b) continue;  // visit each undirected edge once, from its (small, large) direction
+    const auto twin = opposite.find({b, a});
+    if (twin == opposite.end())
+      throw InputError("wall triangulation has an open edge " + std::to_string(a) + "-" + std::to_string(b));
+    mesh.bonds.push_back({a, b});
+    mesh.rest_length_m.push_back((positions.col(a) - positions.col(b)).norm());
+    mesh.hinges.push_back({a, b, c, twin->second});
+  }
+  mesh.triangles = std::move(triangles);
+  return mesh;
+}
+
+double largest_circumradius(const Eigen::Matrix3Xd& x, const std::vector<std::array<int, 3>>& triangles) {
+  double largest = 0;
+  for (const auto& t : triangles) {
+    const double a = (x.col(t[1]) - x.col(t[2])).norm(), b = (x.col(t[0]) - x.col(t[2])).norm(),
+                 c = (x.col(t[0]) - x.col(t[1])).norm();
+    const double twice_area = (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
+    largest = std::max(largest, a * b * c / (2.0 * twice_area));
+  }
+  return largest;
+}
+
+}  // namespace cellsim

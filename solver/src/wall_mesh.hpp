@@ -1,0 +1,31 @@
+#pragma once
+// The wall's triangle network: triangles, bonds (edges) with rest lengths, bending hinges.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
+
+namespace cellsim {
+
+// Two triangles sharing edge (a, b): (a, b, c) and (b, a, d), both outward (Eq 20).
+struct Hinge {
+  int a, b, c, d;
+};
+
+struct WallMesh {
+  std::vector<std::array<int, 3>> triangles;  // outward
+  std::vector<std::array<int, 2>> bonds;      // i < j, each edge once
+  std::vector<double> rest_length_m;          // l0 per bond (initial edge length)
+  std::vector<Hinge> hinges;                  // one per interior edge (all edges of a closed surface)
+};
+
+// Builds bonds and hinges from outward triangles; throws InputError if the surface is not closed.
+WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::array<int, 3>> triangles);
+
+// Points on a sphere by the golden-spiral (Fibonacci) lattice: quasi-uniform, deterministic.
+Eigen::Matrix3Xd fibonacci_sphere(int n, double radius);
+
+double largest_circumradius(const Eigen::Matrix3Xd& positions, const std::vector<std::array<int, 3>>& triangles);
+
+}  // namespace cellsim
