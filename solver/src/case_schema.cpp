@@ -88,6 +88,8 @@ std::vector<ParamSpec> build_specs() {
            "wall permeability L_p during drying (raised to reach steady state fast)", "Eq 11"),
       real("drying.ramp_time_us", "us", kMicro, &P::ramp_time_s, 20, 0, true, 1e6, true,
            "time over which L_ref ramps (smoothstep) from l0 to L_ref(X)", "Eq 21, model §5"),
+      real("drying.pressure_closure_time_us", "us", kMicro, &P::pressure_closure_time_s, 2, 0, true, 1e6, true,
+           "relaxation time of the wall-pressure closure during drying (0: off)", "docs/model-closures.md"),
       // compression
       integer("compression.steps", &P::compression_steps, 25000, 0, 1e9,
               "maximum time steps of the compression stage", "model §6"),

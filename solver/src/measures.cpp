@@ -31,6 +31,10 @@ const std::vector<Quantity>& quantities() {
       {"kinetic_energy_fluid_J", "J", "sum of m v^2 / 2 over fluid particles", &Record::kinetic_energy_fluid_J},
       {"kinetic_energy_wall_J", "J", "sum of m v^2 / 2 over wall particles", &Record::kinetic_energy_wall_J},
       {"wall_strain_mean", "1", "mean bond strain (l - l0) / l0", &Record::wall_strain_mean},
+      {"wall_tension_N_m", "N/m", "mean wall tension: sum over bonds of tension x length / (2 x wall area)",
+       &Record::wall_tension_N_m},
+      {"wall_pressure_Pa", "Pa", "pressure the wall carries: outward LJ push along the vertex normals / wall area",
+       &Record::wall_pressure_Pa},
       {"plate_top_z_m", "m", "height of the top plate (NaN before compression)", &Record::plate_top_z_m},
       {"plate_bottom_z_m", "m", "height of the bottom plate (NaN before compression)", &Record::plate_bottom_z_m},
       {"plate_force_top_N", "N", "force of the wall on the top plate, upward positive (Eq 22 reaction)",
@@ -89,6 +93,8 @@ Record measure(const State& s, const WallMesh& mesh, const Params& p, const Equa
     const double l = (w.x.col(mesh.bonds[b][0]) - w.x.col(mesh.bonds[b][1])).norm();
     strain_sum += (l - mesh.rest_length_m[b]) / mesh.rest_length_m[b];
   }
+  r.wall_tension_N_m = s.wall_tension_N_m;
+  r.wall_pressure_Pa = s.wall_pressure_Pa;
   r.wall_strain_mean = mesh.bonds.empty() ? 0.0 : strain_sum / static_cast<double>(mesh.bonds.size());
 
   const Plates& pl = s.plates;

@@ -41,6 +41,7 @@ struct Params {
   std::int64_t drying_steps = 0;
   double drying_Lp_m_per_s_Pa = 0;      // L_p, Eq 11
   double ramp_time_s = 0;               // smoothstep ramp of L_ref, model.md §5
+  double pressure_closure_time_s = 0;   // relaxation time of the wall-pressure closure (0: off)
 
   // compression stage, model.md §6 and Eq 22
   std::int64_t compression_steps = 0;

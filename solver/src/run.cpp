@@ -5,40 +5,54 @@
 #include "case_file.hpp"
 #include "cell.hpp"
 #include "errors.hpp"
-#include "measures.hpp"
+#include "progress.hpp"
 #include "result_file.hpp"
+#include "simulation.hpp"
 
 namespace cellsim {
 namespace {
 
-State initial_state(const Cell& cell, const Params& p) {
-  State s;
-  s.fluid.x = cell.fluid_x;
-  s.fluid.v = Eigen::Matrix3Xd::Zero(3, cell.fluid_x.cols());
-  s.fluid.m = Eigen::VectorXd::Constant(cell.fluid_x.cols(), cell.fluid_mass_kg);
-  s.fluid.rho = Eigen::VectorXd::Constant(cell.fluid_x.cols(), p.fluid_density_kg_m3);
-  s.wall.x = cell.wall_x;
-  s.wall.v = Eigen::Matrix3Xd::Zero(3, cell.wall_x.cols());
-  s.wall.mass_kg = cell.wall_mass_kg;
-  s.smoothing_length_m = *p.h0_m;
-  s.initial_fluid_mass_kg = s.fluid.m.sum();
-  return s;
+// Steps, records and snapshots for one stage. A record and a snapshot are taken at the stage's
+// last step whatever the intervals, so every stage's end state is in the file.
+void run_stage(Simulation& sim, std::int64_t steps, ResultFile& out, std::vector<Record>& records,
+               Progress& progress, const char* name) {
+  const Params& p = sim.params();
+  for (std::int64_t n = 1; n <= steps; ++n) {
+    sim.step();
+    const bool last = n == steps;
+    if (n % p.record_every == 0 || last) {
+      sim.check_containment();
+      records.push_back(sim.record());
+    }
+    if ((p.snapshot_every > 0 && n % p.snapshot_every == 0) || last) out.write_snapshot(sim.state(), sim.eos());
+    progress.update(sim.state().step, sim.state().time_s, name);
+  }
 }
 
 }  // namespace
 
 void run_case(Params p, const RunOptions& options) {
-  const Cell cell = build_cell(p);
-  if (p.drying_steps > 0 || p.compression_steps > 0)
-    throw InputError("drying.steps and compression.steps must be 0 until the physics is implemented");
+  const Cell cell = build_cell(p);  // fills in derived parameters
   ResultFile out(options.output_path);
   out.write_header(case_to_json(p));
   out.write_mesh(cell.mesh, static_cast<long>(p.n_fluid));
-  State s = initial_state(cell, p);
-  const EquationOfState eos{p.turgor_Pa * p.dryness, p.bulk_modulus_Pa, p.fluid_density_kg_m3, p.eos_exponent};
-  std::vector<Record> records{measure(s, cell.mesh, p, eos)};
-  out.write_snapshot(s, eos);
-  out.complete(records, s);
+
+  Simulation sim(p, cell);
+  std::vector<Record> records{sim.record()};
+  out.write_snapshot(sim.state(), sim.eos());
+  Progress progress(p.drying_steps + p.compression_steps, p.progress_interval_s, options.quiet);
+  try {
+    run_stage(sim, p.drying_steps, out, records, progress, "drying");
+    if (p.compression_steps > 0) {
+      sim.start_compression();
+      run_stage(sim, p.compression_steps, out, records, progress, "compression");
+    }
+  } catch (const NumericalFailure& e) {
+    out.fail(records, e.what());
+    throw NumericalFailure(std::string(e.what()) + "; partial results in " + out.partial_path());
+  }
+  progress.finish(sim.state().step, sim.state().time_s);
+  out.complete(records, sim.state());
 }
 
 }  // namespace cellsim

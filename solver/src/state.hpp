@@ -44,6 +44,9 @@ struct State {
   double time_s = 0;
   double smoothing_length_m = 0;  // h, Eq 6
   double initial_fluid_mass_kg = 0;
+  // Diagnostics of the last force evaluation (recorded, not state to integrate).
+  double wall_tension_N_m = 0;    // mean membrane tension: sum(tension x length) / (2 area)
+  double wall_pressure_Pa = 0;    // outward LJ push on the wall along its normals / area
 };
 
 }  // namespace cellsim

@@ -1,0 +1,27 @@
+#pragma once
+// Wall bending, Eq 20: E_b = (k_b/2) sum_hinges L_n (1 - n1.n2)/(1 + n1.n2), n1 and n2 the unit
+// normals of the two triangles sharing a hinge edge, L_n = l0_n / mean(l0) (the edge's rest length,
+// a fixed geometric weight). Forces are -grad E_b, derived analytically from dot and cross products.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wall_mesh.hpp"
+
+namespace cellsim {
+
+class Bending {
+ public:
+  Bending(const WallMesh& mesh, double bending_stiffness_J);
+
+  double energy(const Eigen::Matrix3Xd& x) const;
+  // Adds -grad E_b to force (3 x N_w).
+  void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;
+
+ private:
+  std::vector<Hinge> hinges_;
+  std::vector<double> weight_;  // k_b L_n per hinge
+  double k_b_;
+};
+
+}  // namespace cellsim

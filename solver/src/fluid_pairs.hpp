@@ -1,0 +1,23 @@
+#pragma once
+// The fluid-fluid pair loop: continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms over
+// a half pair list, each pair visited once and applied to both particles.
+#include <Eigen/Core>
+
+#include "eos.hpp"
+#include "kernel.hpp"
+#include "neighbours.hpp"
+#include "state.hpp"
+
+namespace cellsim {
+
+struct FluidRates {
+  Eigen::Matrix3Xd force;   // [N]
+  Eigen::VectorXd drho_dt;  // continuity part only [kg/m^3/s]
+  Eigen::VectorXd pressure; // EOS pressure [Pa]
+};
+
+// Overwrites out (sized to the fluid).
+void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
+                      const EquationOfState& eos, double viscosity_Pa_s, FluidRates& out);
+
+}  // namespace cellsim

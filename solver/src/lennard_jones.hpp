@@ -1,0 +1,21 @@
+#pragma once
+// Wall-fluid Lennard-Jones-type coupling, Eqs 12-13 and 17-19 (model.md §4):
+// F_ik = f(r) x_ik on fluid i, x_ik = x_i - x_k (a position vector, not a unit vector),
+// f(r) = f0 [(r0/r)^8 - (r0/r)^4] / r^2, with f0 = repulsion_f0 for r < r0 (f > 0, pushes i away)
+// and f0 = attraction_f0 for r0 <= r < r_c (f < 0, pulls i back), 0 beyond r_c.
+namespace cellsim {
+
+struct LennardJones {
+  double r0_m, cutoff_m, repulsion_f0_N_m, attraction_f0_N_m;
+
+  // f(r) from r^2; powers of (r0/r)^2 avoid pow and sqrt.
+  double f_of_r2(double r2) const {
+    if (r2 >= cutoff_m * cutoff_m) return 0.0;
+    const double q = r0_m * r0_m / r2;  // (r0/r)^2
+    const double q2 = q * q;
+    const double f0 = q > 1.0 ? repulsion_f0_N_m : attraction_f0_N_m;
+    return f0 * (q2 * q2 - q2) / r2;
+  }
+};
+
+}  // namespace cellsim

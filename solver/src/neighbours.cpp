@@ -1,0 +1,135 @@
+#include "neighbours.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace cellsim {
+namespace {
+
+// Uniform grid over a bounding box; particles binned by counting sort (deterministic order).
+constexpr double kMaxCellsPerSide = 200;
+
+struct CellGrid {
+  Eigen::Vector3d origin;
+  double size;
+  std::array<int, 3> dims;
+  std::vector<int> start;  // per cell, into order
+  std::vector<int> order;  // particle indices grouped by cell
+
+  CellGrid(const Eigen::Matrix3Xd& x, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double cell_size)
+      : origin(lo), size(std::max(cell_size, (hi - lo).maxCoeff() / kMaxCellsPerSide)) {
+    // Larger cells still cover the cut-off; the cap keeps a stray particle from allocating a huge grid.
+    for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>(std::floor((hi[d] - lo[d]) / size)) + 1);
+    std::vector<int> cell_of(static_cast<std::size_t>(x.cols()));
+    start.assign(static_cast<std::size_t>(dims[0] * dims[1] * dims[2]) + 1, 0);
+    for (Eigen::Index i = 0; i < x.cols(); ++i) {
+      const int c = cell_index(x.col(i));
+      cell_of[static_cast<std::size_t>(i)] = c;
+      ++start[static_cast<std::size_t>(c) + 1];
+    }
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    order.resize(static_cast<std::size_t>(x.cols()));
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (Eigen::Index i = 0; i < x.cols(); ++i)
+      order[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[static_cast<std::size_t>(i)])]++)] =
+          static_cast<int>(i);
+  }
+
+  std::array<int, 3> coords(const Eigen::Vector3d& p) const {
+    std::array<int, 3> c{};
+    for (int d = 0; d < 3; ++d)
+      c[d] = std::clamp(static_cast<int>(std::floor((p[d] - origin[d]) / size)), 0, dims[d] - 1);
+    return c;
+  }
+  int cell_index(const Eigen::Vector3d& p) const {
+    const auto c = coords(p);
+    return (c[2] * dims[1] + c[1]) * dims[0] + c[0];
+  }
+
+  // Calls visit(j) for every particle of this grid in the 27 cells around p.
+  template <class Visit>
+  void for_each_near(const Eigen::Vector3d& p, Visit&& visit) const {
+    const auto c = coords(p);
+    for (int dz = -1; dz <= 1; ++dz) {
+      const int z = c[2] + dz;
+      if (z < 0 || z >= dims[2]) continue;
+      for (int dy = -1; dy <= 1; ++dy) {
+        const int y = c[1] + dy;
+        if (y < 0 || y >= dims[1]) continue;
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int xcell = c[0] + dx;
+          if (xcell < 0 || xcell >= dims[0]) continue;
+          const int cell = (z * dims[1] + y) * dims[0] + xcell;
+          for (int k = start[static_cast<std::size_t>(cell)]; k < start[static_cast<std::size_t>(cell) + 1]; ++k)
+            visit(order[static_cast<std::size_t>(k)]);
+        }
+      }
+    }
+  }
+};
+
+double max_displacement(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& then) {
+  if (now.cols() != then.cols()) return INFINITY;
+  return now.cols() ? (now - then).colwise().norm().maxCoeff() : 0.0;
+}
+
+}  // namespace
+
+bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
+                            double wall_fluid_cutoff) {
+  fluid_cutoff_ = fluid_cutoff;
+  wall_fluid_cutoff_ = wall_fluid_cutoff;
+  if (builds_ > 0) {
+    // A pair now within the cut-off was within cut-off + 2 max_disp at the build.
+    const double moved = 2.0 * std::max(max_displacement(fluid_x, fluid_at_build_),
+                                        max_displacement(wall_x, wall_at_build_));
+    if (fluid_cutoff + moved <= list_fluid_cutoff_ && wall_fluid_cutoff + moved <= list_wall_cutoff_) return false;
+  }
+  build(fluid_x, wall_x);
+  return true;
+}
+
+void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x) {
+  list_fluid_cutoff_ = fluid_cutoff_ + skin_;
+  list_wall_cutoff_ = wall_fluid_cutoff_ + skin_;
+  fluid_at_build_ = fluid_x;
+  wall_at_build_ = wall_x;
+  ++builds_;
+
+  Eigen::Vector3d lo = fluid_x.rowwise().minCoeff(), hi = fluid_x.rowwise().maxCoeff();
+  if (wall_x.cols()) {
+    lo = lo.cwiseMin(wall_x.rowwise().minCoeff());
+    hi = hi.cwiseMax(wall_x.rowwise().maxCoeff());
+  }
+  const double ff2 = list_fluid_cutoff_ * list_fluid_cutoff_, fw2 = list_wall_cutoff_ * list_wall_cutoff_;
+  const CellGrid fluid_grid(fluid_x, lo, hi, list_fluid_cutoff_);
+  const CellGrid wall_grid(wall_x, lo, hi, list_wall_cutoff_);
+
+  const int n = static_cast<int>(fluid_x.cols());
+  fluid_fluid_.offset.assign(1, 0);
+  fluid_fluid_.index.clear();
+  fluid_wall_.offset.assign(1, 0);
+  fluid_wall_.index.clear();
+  std::vector<int> row;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d xi = fluid_x.col(i);
+    row.clear();
+    fluid_grid.for_each_near(xi, [&](int j) {
+      if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2) row.push_back(j);
+    });
+    std::sort(row.begin(), row.end());  // ascending j: memory order, and independent of binning
+    fluid_fluid_.index.insert(fluid_fluid_.index.end(), row.begin(), row.end());
+    fluid_fluid_.offset.push_back(static_cast<int>(fluid_fluid_.index.size()));
+
+    row.clear();
+    wall_grid.for_each_near(xi, [&](int k) {
+      if ((wall_x.col(k) - xi).squaredNorm() < fw2) row.push_back(k);
+    });
+    std::sort(row.begin(), row.end());
+    fluid_wall_.index.insert(fluid_wall_.index.end(), row.begin(), row.end());
+    fluid_wall_.offset.push_back(static_cast<int>(fluid_wall_.index.size()));
+  }
+}
+
+}  // namespace cellsim

@@ -1,0 +1,246 @@
+#include "simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "containment.hpp"
+#include "errors.hpp"
+#include "mass_transfer.hpp"
+#include "wall_fluid.hpp"
+#include "wall_terms.hpp"
+
+namespace cellsim {
+namespace {
+
+// Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
+constexpr double kSkinOverH0 = 0.15;
+
+// Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
+double wall_spring_limit(const WallMesh& mesh, const Params& p, double wall_mass, long n_wall) {
+  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), 0.0);
+  const double k_bond = p.contraction_stiffness_N_m + 2.0 * p.G_Pa * p.thickness_m / std::sqrt(3.0);
+  for (const auto& b : mesh.bonds) {
+    k_sum[static_cast<std::size_t>(b[0])] += k_bond;
+    k_sum[static_cast<std::size_t>(b[1])] += k_bond;
+  }
+  double k_max = p.plate_stiffness_N_m;
+  for (double k : k_sum) k_max = std::max(k_max, k + p.plate_stiffness_N_m);
+  return 2.0 / std::sqrt(2.0 * k_max / wall_mass);
+}
+
+}  // namespace
+
+Simulation::Simulation(const Params& p, const Cell& cell)
+    : p_(p),
+      mesh_(cell.mesh),
+      bending_(cell.mesh, p.bending_stiffness_J),
+      neighbours_(kSkinOverH0 * *p.h0_m),
+      lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
+      bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
+      osmotic_Pa_(-p.turgor_Pa * p.dryness),
+      Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
+  s_.fluid.x = cell.fluid_x;
+  s_.fluid.v = Eigen::Matrix3Xd::Zero(3, cell.fluid_x.cols());
+  s_.fluid.m = Eigen::VectorXd::Constant(cell.fluid_x.cols(), cell.fluid_mass_kg);
+  s_.fluid.rho = Eigen::VectorXd::Constant(cell.fluid_x.cols(), p.fluid_density_kg_m3);
+  s_.wall.x = cell.wall_x;
+  s_.wall.v = Eigen::Matrix3Xd::Zero(3, cell.wall_x.cols());
+  s_.wall.mass_kg = cell.wall_mass_kg;
+  s_.smoothing_length_m = *p.h0_m;
+  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.plates.first_contact_top_z_m = std::nan("");
+  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, p_, cell.wall_mass_kg, cell.wall_x.cols());
+  compute_rates();
+}
+
+EquationOfState Simulation::eos() const {
+  return {p_.turgor_Pa * p_.dryness, p_.bulk_modulus_Pa, p_.fluid_density_kg_m3, p_.eos_exponent};
+}
+
+void Simulation::step() {
+  check_time_step();
+  kick(0.5 * p_.dt_s);
+  drift(p_.dt_s);
+  compute_rates();
+  kick(0.5 * p_.dt_s);
+  if (s_.stage == Stage::Drying) apply_pressure_closure();
+  ++s_.step;
+  ++s_.stage_step;
+  check_state();
+}
+
+// Forces and rates at the current positions, in the order of the model.
+void Simulation::compute_rates() {
+  update_geometry();
+  fluid_terms();
+  mass_transfer();
+  wall_force_.setZero(3, s_.wall.size());
+  wall_terms();
+  wall_fluid_terms();
+  plate_terms();
+}
+
+// Wall area and volume, vertex normals, and the smoothing length of Eq 6: h = (D / D0) h0.
+void Simulation::update_geometry() {
+  const auto& x = s_.wall.x;
+  vertex_normal_.setZero(3, x.cols());
+  double twice_area = 0, six_volume = 0;
+  for (const auto& t : mesh_.triangles) {
+    const Eigen::Vector3d a = x.col(t[0]), b = x.col(t[1]), c = x.col(t[2]);
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    twice_area += n.norm();
+    six_volume += a.dot(b.cross(c));
+    for (int v : t) vertex_normal_.col(v) += n;
+  }
+  wall_area_m2_ = 0.5 * twice_area;
+  volume_m3_ = six_volume / 6.0;
+  const double diameter = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
+  if (initial_diameter_m_ == 0) initial_diameter_m_ = diameter;  // D0 of the mesh itself: h = h0 at t = 0
+  s_.smoothing_length_m = diameter / initial_diameter_m_ * *p_.h0_m;
+  lj_.cutoff_m = std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
+}
+
+// Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
+void Simulation::fluid_terms() {
+  const CubicSplineKernel kernel(s_.smoothing_length_m);
+  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m);
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, fluid_);
+}
+
+// Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
+void Simulation::mass_transfer() {
+  auto& f = s_.fluid;
+  dm_dt_.resize(f.size());
+  const int n = static_cast<int>(f.size());
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    dm_dt_[i] = mass_rate(wall_area_m2_, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa_);
+    fluid_.drho_dt[i] = density_rate(fluid_.drho_dt[i], f.rho[i], f.m[i], dm_dt_[i]);
+  }
+}
+
+// Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
+void Simulation::wall_terms() {
+  const double ramp = s_.stage == Stage::Drying ? wall::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
+  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_);
+  s_.wall_tension_N_m = tension_length / (2.0 * wall_area_m2_);
+  bending_.add_forces(s_.wall.x, wall_force_);
+}
+
+// Lennard-Jones coupling; also the outward push on the wall that the pressure closure and the
+// Young-Laplace check compare with the fluid pressure.
+void Simulation::wall_fluid_terms() {
+  wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, lj_on_wall_);
+  wall_force_ += lj_on_wall_;
+  double outward = 0;
+  for (Eigen::Index k = 0; k < lj_on_wall_.cols(); ++k)
+    outward += lj_on_wall_.col(k).dot(vertex_normal_.col(k).normalized());
+  s_.wall_pressure_Pa = outward / wall_area_m2_;
+}
+
+void Simulation::plate_terms() {}
+
+void Simulation::kick(double half_dt) {
+  auto& f = s_.fluid;
+  for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += half_dt / f.m[i] * fluid_.force.col(i);
+  f.rho += half_dt * fluid_.drho_dt;
+  f.m += half_dt * dm_dt_;
+  s_.wall.v += (half_dt / s_.wall.mass_kg) * wall_force_;
+}
+
+void Simulation::drift(double dt) {
+  s_.fluid.x += dt * s_.fluid.v;
+  s_.wall.x += dt * s_.wall.v;
+  s_.time_s += dt;
+}
+
+// The volume closure (docs/model-closures.md): during drying, nudge every fluid mass (density
+// unchanged, so the particle volume m/rho changes) until the pressure the wall carries equals
+// the mean fluid pressure; relaxation time tau.
+void Simulation::apply_pressure_closure() {
+  const double tau = p_.pressure_closure_time_s;
+  if (tau <= 0) return;
+  const double mean_pressure = fluid_.pressure.mean();
+  if (!(mean_pressure > 0) || !(s_.wall_pressure_Pa > 0)) return;  // no turgor to match
+  const double ratio = std::clamp(s_.wall_pressure_Pa / mean_pressure, 0.5, 2.0);
+  s_.fluid.m *= std::pow(ratio, -p_.dt_s / (2.0 * tau));
+}
+
+std::string Simulation::where() const {
+  std::ostringstream s;
+  s << "step " << s_.step << " (t = " << s_.time_s * 1e6 << " us, "
+    << (s_.stage == Stage::Drying ? "drying" : "compression") << ")";
+  return s.str();
+}
+
+void Simulation::check_state() const {
+  const auto report = [&](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) {
+    for (Eigen::Index i = 0; i < m.cols(); ++i)
+      if (!m.col(i).allFinite())
+        throw NumericalFailure(where() + ": " + kind + " particle " + std::to_string(i) + " has a non-finite " +
+                               quantity);
+  };
+  if (!s_.fluid.x.allFinite()) report("fluid", s_.fluid.x, "position");
+  if (!s_.fluid.v.allFinite()) report("fluid", s_.fluid.v, "velocity");
+  if (!s_.wall.x.allFinite()) report("wall", s_.wall.x, "position");
+  if (!s_.wall.v.allFinite()) report("wall", s_.wall.v, "velocity");
+  for (Eigen::Index i = 0; i < s_.fluid.size(); ++i)
+    if (!std::isfinite(s_.fluid.rho[i]) || !(s_.fluid.rho[i] > 0) || !std::isfinite(s_.fluid.m[i]) ||
+        !(s_.fluid.m[i] > 0)) {
+      std::ostringstream msg;
+      msg << where() << ": fluid particle " << i << " has density " << s_.fluid.rho[i] << " kg/m^3 and mass "
+          << s_.fluid.m[i] << " kg (both must be positive and finite)";
+      throw NumericalFailure(msg.str());
+    }
+}
+
+// model.md §7: dt must stay under the CFL limits and the wall-spring limit.
+void Simulation::check_time_step() const {
+  const double h = s_.smoothing_length_m;
+  const double c0 = eos().sound_speed_m_s();
+  Eigen::Index i_v = 0, i_a = 0;
+  const double v_max = s_.fluid.size() ? s_.fluid.v.colwise().norm().maxCoeff(&i_v) : 0.0;
+  double a_max = 0;
+  for (Eigen::Index i = 0; i < s_.fluid.size(); ++i) {
+    const double a = fluid_.force.col(i).norm() / s_.fluid.m[i];
+    if (a > a_max) a_max = a, i_a = i;
+  }
+  const struct {
+    double limit;
+    std::string what;
+  } limits[] = {
+      {0.25 * h / (c0 + v_max), "the sound-speed CFL limit 0.25 h / (c0 + |v|max), |v|max = " +
+                                    std::to_string(v_max) + " m/s at fluid particle " + std::to_string(i_v)},
+      {p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY,
+       "the viscous limit 0.125 h^2 rho0 / mu"},
+      {a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY,
+       "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
+           " m/s^2 at fluid particle " + std::to_string(i_a)},
+      {wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle"},
+  };
+  for (const auto& l : limits)
+    if (p_.dt_s > l.limit) {
+      std::ostringstream msg;
+      msg << where() << ": time step " << p_.dt_s * 1e9 << " ns exceeds " << l.what << " (" << l.limit * 1e9
+          << " ns); reduce time.dt_ns";
+      throw NumericalFailure(msg.str());
+    }
+}
+
+void Simulation::check_containment() const {
+  const int outside = first_particle_outside(s_.fluid.x, s_.wall.x, mesh_);
+  if (outside >= 0) {
+    std::ostringstream msg;
+    const Eigen::Vector3d x = s_.fluid.x.col(outside);
+    msg << where() << ": fluid particle " << outside << " is outside the cell wall at (" << x.x() * 1e6 << ", "
+        << x.y() * 1e6 << ", " << x.z() * 1e6 << ") um";
+    throw NumericalFailure(msg.str());
+  }
+}
+
+void Simulation::start_compression() {
+  s_.stage = Stage::Compression;
+  s_.stage_step = 0;
+  Lp_m_per_s_Pa_ = p_.compression_Lp_m_per_s_Pa;
+}
+
+}  // namespace cellsim

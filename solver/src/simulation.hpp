@@ -1,0 +1,74 @@
+#pragma once
+// One cell run: the state, and the step that advances it (model.md §2-7). The step reads like
+// the model: geometry -> neighbours -> density and mass transfer -> fluid forces -> wall forces
+// -> wall-fluid forces -> plates -> integrate -> checks.
+#include <string>
+
+#include "bending.hpp"
+#include "eos.hpp"
+#include "fluid_pairs.hpp"
+#include "kernel.hpp"
+#include "lennard_jones.hpp"
+#include "measures.hpp"
+#include "neighbours.hpp"
+#include "params.hpp"
+#include "cell.hpp"
+#include "state.hpp"
+#include "wall_bonds.hpp"
+#include "wall_mesh.hpp"
+
+namespace cellsim {
+
+class Simulation {
+ public:
+  Simulation(const Params& p, const Cell& cell);
+
+  void step();                  // one kick-drift-kick step of dt
+  void start_compression();     // switches L_p and places the plates (model.md §6)
+
+  const State& state() const { return s_; }
+  State& mutable_state() { return s_; }
+  const WallMesh& mesh() const { return mesh_; }
+  const Params& params() const { return p_; }
+  EquationOfState eos() const;
+  Record record() const { return measure(s_, mesh_, p_, eos()); }
+
+  // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
+  void check_containment() const;
+
+ private:
+  void compute_rates();
+  void update_geometry();
+  void fluid_terms();
+  void mass_transfer();
+  void wall_terms();
+  void wall_fluid_terms();
+  void plate_terms();
+  void kick(double half_dt);
+  void drift(double dt);
+  void apply_pressure_closure();
+  void check_state() const;
+  void check_time_step() const;
+  std::string where() const;
+
+  Params p_;
+  WallMesh mesh_;
+  State s_;
+  Bending bending_;
+  NeighbourLists neighbours_;
+  LennardJones lj_;
+  BondLaw bond_law_;
+  double osmotic_Pa_;           // Pi = -P_T(X)
+
+  // Rates at the current positions.
+  FluidRates fluid_;
+  Eigen::Matrix3Xd wall_force_, lj_on_wall_;
+  Eigen::VectorXd dm_dt_;
+  Eigen::Matrix3Xd vertex_normal_;  // area-weighted outward normals of the wall
+  double wall_area_m2_ = 0, volume_m3_ = 0;
+  double initial_diameter_m_ = 0;  // D0 of Eq 6: equivalent diameter of the initial wall mesh
+  double Lp_m_per_s_Pa_;
+  double wall_spring_dt_limit_s_;
+};
+
+}  // namespace cellsim

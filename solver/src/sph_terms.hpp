@@ -1,0 +1,26 @@
+#pragma once
+// Per-pair SPH terms of Table 1, for fluid particles i and j at distance r, x_ij = x_i - x_j.
+// F_ij is the force on i; j gets -F_ij (each term is antisymmetric: Newton's third law).
+#include <Eigen/Core>
+
+namespace cellsim::sph {
+
+// Pressure force, Eq 3 (symmetric form): F_ij = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij,
+// grad_i W_ij = dW_dr_over_r * x_ij.
+inline Eigen::Vector3d pressure_force(double mi, double mj, double Pi_over_rho2, double Pj_over_rho2,
+                                      double dW_dr_over_r, const Eigen::Vector3d& xij) {
+  return -mi * mj * (Pi_over_rho2 + Pj_over_rho2) * dW_dr_over_r * xij;
+}
+
+// Viscous force, Eq 4 in Morris' dissipative form (model.md §2: the printed minus adds energy):
+// F_ij = m_i m_j (mu_i + mu_j)/(rho_i rho_j) (1/r dW/dr) v_ij.
+inline Eigen::Vector3d viscous_force(double mi, double mj, double mu_sum, double rhoi, double rhoj,
+                                     double dW_dr_over_r, const Eigen::Vector3d& vij) {
+  return mi * mj * mu_sum / (rhoi * rhoj) * dW_dr_over_r * vij;
+}
+
+// Continuity, Eq 10: the contribution of j to d(rho_i)/dt is m_j v_ij . grad_i W_ij
+// (and that of i to d(rho_j)/dt is m_i v_ij . grad_i W_ij: same dot product).
+inline double continuity_rate(double v_dot_grad, double m_other) { return m_other * v_dot_grad; }
+
+}  // namespace cellsim::sph

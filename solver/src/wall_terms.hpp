@@ -1,0 +1,35 @@
+#pragma once
+// Per-bond wall forces of Table 2, as magnitudes along the bond (tension positive: pulls the
+// two particles together), and the bond damping, Eq 16.
+#include <cmath>
+
+#include <Eigen/Core>
+
+namespace cellsim::wall {
+
+// Stiff force, Eq 15 with the wall thickness (model.md §3): (G t0 l0 / sqrt 3)(lambda - 1/lambda).
+inline double stiff_tension(double G_Pa, double thickness_m, double l0, double l) {
+  const double lambda = l / l0;
+  return G_Pa * thickness_m * l0 / std::sqrt(3.0) * (lambda - 1.0 / lambda);
+}
+
+// Contraction, Eq 21: k_wc (l - L_ref), L_ref = l0 [1 - c (1 - X) ramp], ramp in [0, 1].
+inline double contraction_tension(double k_wc, double l, double l_ref) { return k_wc * (l - l_ref); }
+
+inline double contraction_rest_length(double l0, double contraction_ratio, double dryness, double ramp) {
+  return l0 * (1.0 - contraction_ratio * (1.0 - dryness) * ramp);
+}
+
+// Smoothstep ramp of L_ref over ramp_time (model.md §5): 0 at t = 0, 1 from ramp_time on.
+inline double smoothstep_ramp(double t, double ramp_time) {
+  if (ramp_time <= 0 || t >= ramp_time) return 1.0;
+  const double u = t / ramp_time;
+  return u * u * (3.0 - 2.0 * u);
+}
+
+// Damping, Eq 16: F_k = -gamma (v_k - v_j) on particle k (and the opposite on j).
+inline Eigen::Vector3d damping_force(double gamma, const Eigen::Vector3d& vk, const Eigen::Vector3d& vj) {
+  return -gamma * (vk - vj);
+}
+
+}  // namespace cellsim::wall

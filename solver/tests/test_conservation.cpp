@@ -1,0 +1,128 @@
+// Conservation laws of the assembled loops (model.md §9): fluid-fluid terms conserve momentum;
+// viscosity alone dissipates kinetic energy; the whole cell conserves momentum without mass
+// transfer and plates; neighbour lists see every pair a brute-force search sees.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "case_file.hpp"
+#include "cell.hpp"
+#include "fluid_pairs.hpp"
+#include "simulation.hpp"
+
+using namespace cellsim;
+
+namespace {
+
+// A cube of fluid on a jittered lattice with random velocities.
+FluidParticles fluid_box(int n_side, double dx, unsigned seed) {
+  FluidParticles f;
+  const int n = n_side * n_side * n_side;
+  f.x.resize(3, n);
+  f.v.resize(3, n);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx), speed(-0.5, 0.5);
+  int p = 0;
+  for (int i = 0; i < n_side; ++i)
+    for (int j = 0; j < n_side; ++j)
+      for (int k = 0; k < n_side; ++k, ++p) {
+        f.x.col(p) << i * dx + jitter(rng), j * dx + jitter(rng), k * dx + jitter(rng);
+        f.v.col(p) << speed(rng), speed(rng), speed(rng);
+      }
+  f.m = Eigen::VectorXd::Constant(n, 1000.0 * dx * dx * dx);
+  f.rho = Eigen::VectorXd::Constant(n, 1000.0);
+  for (int q = 0; q < n; ++q) f.rho[q] += 3.0 * std::sin(q);  // unequal pressures
+  return f;
+}
+
+double kinetic_energy(const FluidParticles& f) {
+  return 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
+}
+
+}  // namespace
+
+TEST(Conservation, FluidPairTermsConserveMomentum) {
+  const double dx = 7.7e-6;
+  FluidParticles f = fluid_box(8, dx, 3);
+  NeighbourLists lists(0.1 * dx);
+  const CubicSplineKernel kernel(1.3 * dx);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  FluidRates rates;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, {2e5, 20e6, 1000, 7}, 0.1, rates);
+  const double scale = rates.force.colwise().norm().maxCoeff();
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(rates.force.rowwise().sum().norm(), 1e-12 * scale * f.size());
+}
+
+TEST(Conservation, ViscosityAloneDissipatesKineticEnergy) {
+  const double dx = 7.7e-6, dt = 1e-9;
+  FluidParticles f = fluid_box(6, dx, 5);
+  f.rho.setConstant(1000.0);
+  NeighbourLists lists(0.1 * dx);
+  const CubicSplineKernel kernel(1.3 * dx);
+  const EquationOfState no_pressure{0.0, 0.0, 1000.0, 7.0};  // K = 0, P_T = 0: viscous terms only
+  FluidRates rates;
+  double previous = kinetic_energy(f);
+  const Eigen::Vector3d momentum0 = f.v * f.m;
+  for (int step = 0; step < 200; ++step) {
+    lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, no_pressure, 0.1, rates);
+    for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += dt / f.m[i] * rates.force.col(i);
+    f.x += dt * f.v;
+    const double now = kinetic_energy(f);
+    ASSERT_LT(now, previous) << "step " << step;
+    previous = now;
+  }
+  EXPECT_LT(previous, 0.9 * kinetic_energy(fluid_box(6, dx, 5)));
+  EXPECT_LT((f.v * f.m - momentum0).norm(), 1e-12 * momentum0.norm() + 1e-24);
+}
+
+TEST(Conservation, WholeCellConservesMomentumWithoutMassTransfer) {
+  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}},
+                        {"drying", {{"Lp_m_per_s_Pa", 0}, {"pressure_closure_time_us", 0}, {"dryness", 0.5}}},
+                        {"time", {{"dt_ns", 0.5}}}};
+  Params p = validate_case(doc);
+  const Cell cell = build_cell(p);
+  Simulation sim(p, cell);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> speed(-0.3, 0.3);
+  State& s = sim.mutable_state();
+  for (Eigen::Index i = 0; i < s.fluid.size(); ++i) s.fluid.v.col(i) << speed(rng), speed(rng), speed(rng);
+  for (Eigen::Index k = 0; k < s.wall.size(); ++k) s.wall.v.col(k) << speed(rng), speed(rng), speed(rng);
+  const auto momentum = [&] { return Eigen::Vector3d(s.fluid.v * s.fluid.m + s.wall.v.rowwise().sum() * s.wall.mass_kg); };
+  const Eigen::Vector3d p0 = momentum();
+  const double scale = (s.fluid.v.colwise().norm().transpose().array() * s.fluid.m.array()).sum();
+  for (int n = 0; n < 300; ++n) sim.step();
+  EXPECT_LT((momentum() - p0).norm(), 1e-10 * scale);
+}
+
+TEST(Neighbours, ListsContainEveryPairWithinTheCutoff) {
+  const double dx = 7.7e-6;
+  FluidParticles f = fluid_box(7, dx, 9);
+  Eigen::Matrix3Xd wall = fluid_box(5, 1.6 * dx, 4).x;
+  NeighbourLists lists(0.5e-6);
+  const double rc_ff = 2.1 * dx, rc_fw = 1.3 * dx;
+  lists.update(f.x, wall, rc_ff, rc_fw);
+  // Move particles a little (less than half the skin) and check the lists still hold every pair.
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> nudge(-0.14e-6, 0.14e-6);
+  for (Eigen::Index i = 0; i < f.size(); ++i) f.x.col(i) += Eigen::Vector3d(nudge(rng), nudge(rng), nudge(rng));
+  EXPECT_FALSE(lists.update(f.x, wall, rc_ff, rc_fw));  // reused, not rebuilt
+  const auto contains = [](const PairList& l, int i, int j) {
+    return std::binary_search(l.index.begin() + l.offset[i], l.index.begin() + l.offset[i + 1], j);
+  };
+  int pairs = 0;
+  for (int i = 0; i < f.size(); ++i) {
+    for (int j = i + 1; j < f.size(); ++j)
+      if ((f.x.col(i) - f.x.col(j)).norm() < rc_ff) {
+        ++pairs;
+        ASSERT_TRUE(contains(lists.fluid_fluid(), i, j)) << i << " " << j;
+      }
+    for (int k = 0; k < wall.cols(); ++k)
+      if ((f.x.col(i) - wall.col(k)).norm() < rc_fw) ASSERT_TRUE(contains(lists.fluid_wall(), i, k)) << i << " " << k;
+  }
+  EXPECT_GT(pairs, 1000);
+  // A larger move forces a rebuild.
+  f.x.col(0) += Eigen::Vector3d(1e-6, 0, 0);
+  EXPECT_TRUE(lists.update(f.x, wall, rc_ff, rc_fw));
+}

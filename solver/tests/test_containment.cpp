@@ -1,0 +1,23 @@
+// The inside-the-wall test used at every record (model.md §4).
+#include <gtest/gtest.h>
+
+#include "containment.hpp"
+#include "hull.hpp"
+
+using namespace cellsim;
+
+TEST(Containment, FindsTheParticleOutsideTheWall) {
+  const Eigen::Matrix3Xd wall = fibonacci_sphere(400, 50e-6);
+  const WallMesh mesh = build_wall_mesh(wall, convex_hull_triangles(wall));
+  Eigen::Matrix3Xd fluid(3, 5);
+  fluid << 0, 40e-6, -30e-6, 0, 10e-6,  //
+      0, 0, 20e-6, -45e-6, 10e-6,       //
+      0, 10e-6, -20e-6, 0, 10e-6;
+  EXPECT_EQ(first_particle_outside(fluid, wall, mesh), -1);
+  fluid.col(3) << 0, -52e-6, 0;  // just beyond the wall, within its xy footprint
+  EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3);
+  fluid.col(3) << 0, 0, 60e-6;  // straight above the cell
+  EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3);
+  fluid.col(3) << 0, 0, -49e-6;  // near the bottom pole, inside
+  EXPECT_EQ(first_particle_outside(fluid, wall, mesh), -1);
+}

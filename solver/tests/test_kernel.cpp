@@ -1,0 +1,55 @@
+// Cubic spline kernel, Eq 5 as corrected in model.md §2: moments on a fine lattice.
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+
+#include "kernel.hpp"
+
+using cellsim::CubicSplineKernel;
+
+namespace {
+
+// Sums f(x) dx^3 over a cubic lattice of spacing h/8 offset from the origin by a fixed shift.
+template <class F>
+double lattice_sum(double h, F f) {
+  const double dx = h / 8.0;
+  const Eigen::Vector3d shift(0.31 * dx, 0.17 * dx, 0.43 * dx);
+  double sum = 0;
+  for (int i = -17; i <= 17; ++i)
+    for (int j = -17; j <= 17; ++j)
+      for (int k = -17; k <= 17; ++k) sum += f(Eigen::Vector3d(i * dx, j * dx, k * dx) + shift) * dx * dx * dx;
+  return sum;
+}
+
+}  // namespace
+
+TEST(Kernel, IntegratesToOne) {
+  const double h = 6.8e-6;
+  const CubicSplineKernel W(h);
+  EXPECT_NEAR(lattice_sum(h, [&](const Eigen::Vector3d& x) { return W.W(x.norm()); }), 1.0, 1e-3);
+}
+
+TEST(Kernel, FirstMomentsVanishAndSecondIsMinusOne) {
+  // PySPH-style moment tests: int x W = 0, int grad W = 0, int x dW/dx = -1.
+  const double h = 2.0;
+  const CubicSplineKernel W(h);
+  const auto grad = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return W.dW_dr_over_r(x.norm()) * x; };
+  EXPECT_NEAR(lattice_sum(h, [&](const Eigen::Vector3d& x) { return x.x() * W.W(x.norm()); }), 0.0, 1e-3 * h);
+  EXPECT_NEAR(lattice_sum(h, [&](const Eigen::Vector3d& x) { return grad(x).y(); }), 0.0, 1e-3 / h);
+  EXPECT_NEAR(lattice_sum(h, [&](const Eigen::Vector3d& x) { return x.z() * grad(x).z(); }), -1.0, 1e-3);
+}
+
+TEST(Kernel, GradientIsOddAndMatchesDerivative) {
+  const CubicSplineKernel W(1.5);
+  for (double r : {0.1, 0.7, 1.4, 1.5, 2.2, 2.9}) {
+    const Eigen::Vector3d x = r * Eigen::Vector3d(0.48, -0.6, 0.64);
+    const Eigen::Vector3d g_plus = W.dW_dr_over_r(x.norm()) * x, g_minus = W.dW_dr_over_r(x.norm()) * (-x);
+    EXPECT_TRUE((g_plus + g_minus).isZero(0.0)) << r;
+    const double eps = 1e-6;
+    EXPECT_NEAR(W.dW_dr(r), (W.W(r + eps) - W.W(r - eps)) / (2 * eps), 1e-6) << r;
+    EXPECT_NEAR(W.dW_dr_over_r(r) * r, W.dW_dr(r), 1e-12) << r;
+  }
+  EXPECT_EQ(W.W(3.0), 0.0);
+  EXPECT_EQ(W.dW_dr(3.0), 0.0);
+  EXPECT_LE(W.dW_dr(1.0), 0.0);
+}
