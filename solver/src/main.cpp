@@ -16,17 +16,19 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--quiet]\n"
+    "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--from DRIED.h5] [--quiet]\n"
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
     "  cellsim params                                    the case keys (Markdown table)\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
     "  cellsim --help | --version\n"
     "\n"
+    "--from starts the compression stage from the end-of-drying state in DRIED.h5 (a run of the\n"
+    "same case with compression.steps = 0); the output then holds the whole history.\n"
     "Keys use units in their names, e.g. --set drying.dryness=0.5 --set wall.G_MPa=0.18.\n"
     "Exit codes: 0 success, 2 bad input (nothing written), 3 numerical failure (OUT.partial kept).\n";
 
 struct Args {
-  std::string command, case_path, output_path;
+  std::string command, case_path, output_path, from_path;
   std::vector<std::string> overrides;
   bool quiet = false;
 };
@@ -44,6 +46,7 @@ Args parse(int argc, char** argv) {
     };
     if (w == "-o" || w == "--output") a.output_path = value(w);
     else if (w == "--set") a.overrides.push_back(value(w));
+    else if (w == "--from") a.from_path = value(w);
     else if (w.rfind("--set=", 0) == 0) a.overrides.push_back(w.substr(6));
     else if (w == "--quiet") a.quiet = true;
     else if (!w.empty() && w[0] == '-') throw cellsim::InputError("unknown option '" + w + "'\n" + kUsage);
@@ -86,7 +89,7 @@ int dispatch(int argc, char** argv) {
   }
   if (a.command == "run") {
     if (a.output_path.empty()) throw cellsim::InputError("'run' needs an output file: -o OUT.h5");
-    cellsim::run_case(load(a), {a.output_path, a.quiet});
+    cellsim::run_case(load(a), {a.output_path, a.from_path, a.quiet});
     return 0;
   }
   throw cellsim::InputError("unknown command '" + a.command + "'\n" + kUsage);

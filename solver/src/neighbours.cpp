@@ -80,7 +80,7 @@ bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix
                             double wall_fluid_cutoff) {
   fluid_cutoff_ = fluid_cutoff;
   wall_fluid_cutoff_ = wall_fluid_cutoff;
-  if (builds_ > 0) {
+  if (!stale_) {
     // A pair now within the cut-off was within cut-off + 2 max_disp at the build.
     const double moved = 2.0 * std::max(max_displacement(fluid_x, fluid_at_build_),
                                         max_displacement(wall_x, wall_at_build_));
@@ -96,6 +96,7 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   fluid_at_build_ = fluid_x;
   wall_at_build_ = wall_x;
   ++builds_;
+  stale_ = false;
 
   Eigen::Vector3d lo = fluid_x.rowwise().minCoeff(), hi = fluid_x.rowwise().maxCoeff();
   if (wall_x.cols()) {

@@ -22,6 +22,8 @@ class NeighbourLists {
   bool update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
               double wall_fluid_cutoff);
 
+  void invalidate() { stale_ = true; }  // the next update rebuilds
+
   const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list: j > i only
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
   long builds() const { return builds_; }
@@ -35,6 +37,7 @@ class NeighbourLists {
   Eigen::Matrix3Xd fluid_at_build_, wall_at_build_;
   PairList fluid_fluid_, fluid_wall_;
   long builds_ = 0;
+  bool stale_ = true;  // no valid list yet, or invalidated
 };
 
 }  // namespace cellsim

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "errors.hpp"
+#include "state_io.hpp"
 #include "version.hpp"
 
 namespace cellsim {
@@ -114,21 +115,6 @@ void ResultFile::write_timeseries(const std::vector<Record>& records) {
     h5::set_dataset_attr(g.id(), q.name, "unit", q.unit);
     h5::set_dataset_attr(g.id(), q.name, "definition", q.definition);
   }
-}
-
-void write_state(hid_t parent, const State& s) {
-  h5::Handle g = h5::create_group(parent, "state");
-  h5::set_attr(g.id(), "time_s", s.time_s);
-  h5::set_attr(g.id(), "step", static_cast<std::int64_t>(s.step));
-  h5::set_attr(g.id(), "stage", static_cast<std::int64_t>(s.stage));
-  h5::set_attr(g.id(), "smoothing_length_m", s.smoothing_length_m);
-  h5::set_attr(g.id(), "initial_fluid_mass_kg", s.initial_fluid_mass_kg);
-  h5::write(g.id(), "wall_positions", flat(s.wall.x), {cols(s.wall.x), 3});
-  h5::write(g.id(), "wall_velocities", flat(s.wall.v), {cols(s.wall.v), 3});
-  h5::write(g.id(), "fluid_positions", flat(s.fluid.x), {cols(s.fluid.x), 3});
-  h5::write(g.id(), "fluid_velocities", flat(s.fluid.v), {cols(s.fluid.v), 3});
-  h5::write(g.id(), "fluid_mass", flat(s.fluid.m), {static_cast<hsize_t>(s.fluid.size())});
-  h5::write(g.id(), "fluid_density", flat(s.fluid.rho), {static_cast<hsize_t>(s.fluid.size())});
 }
 
 void ResultFile::complete(const std::vector<Record>& records, const State& final_state) {

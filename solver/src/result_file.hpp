@@ -44,7 +44,4 @@ class ResultFile {
   bool done_ = false;
 };
 
-// Writes the restartable state into group `parent` (used by ResultFile, read by --from).
-void write_state(hid_t parent, const State& s);
-
 }  // namespace cellsim

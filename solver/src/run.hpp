@@ -8,7 +8,8 @@ namespace cellsim {
 
 struct RunOptions {
   std::string output_path;
-  bool quiet = false;  // no progress lines on stderr
+  std::string from_path;  // continue from the end-of-drying state in this result file (--from)
+  bool quiet = false;     // no progress lines on stderr
 };
 
 // Throws InputError before writing anything under the output's final name, NumericalFailure

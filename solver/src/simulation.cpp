@@ -6,6 +6,7 @@
 #include "containment.hpp"
 #include "errors.hpp"
 #include "mass_transfer.hpp"
+#include "plates.hpp"
 #include "wall_fluid.hpp"
 #include "wall_terms.hpp"
 
@@ -36,6 +37,7 @@ Simulation::Simulation(const Params& p, const Cell& cell)
       bending_(cell.mesh, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
+      plate_law_{p.plate_range_m, p.plate_stiffness_N_m, p.plate_length_m, p.plate_width_m},
       bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
       osmotic_Pa_(-p.turgor_Pa * p.dryness),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
@@ -50,6 +52,8 @@ Simulation::Simulation(const Params& p, const Cell& cell)
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
   wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, p_, cell.wall_mass_kg, cell.wall_x.cols());
+  // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
+  initial_diameter_m_ = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
   compute_rates();
 }
 
@@ -95,7 +99,6 @@ void Simulation::update_geometry() {
   wall_area_m2_ = 0.5 * twice_area;
   volume_m3_ = six_volume / 6.0;
   const double diameter = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
-  if (initial_diameter_m_ == 0) initial_diameter_m_ = diameter;  // D0 of the mesh itself: h = h0 at t = 0
   s_.smoothing_length_m = diameter / initial_diameter_m_ * *p_.h0_m;
   lj_.cutoff_m = std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
@@ -137,7 +140,13 @@ void Simulation::wall_fluid_terms() {
   s_.wall_pressure_Pa = outward / wall_area_m2_;
 }
 
-void Simulation::plate_terms() {}
+// Eq 22 during compression; the first contact of the top plate starts the plate strain.
+void Simulation::plate_terms() {
+  Plates& plates = s_.plates;
+  if (!plates.active) return;
+  add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_);
+  if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
+}
 
 void Simulation::kick(double half_dt) {
   auto& f = s_.fluid;
@@ -151,6 +160,8 @@ void Simulation::drift(double dt) {
   s_.fluid.x += dt * s_.fluid.v;
   s_.wall.x += dt * s_.wall.v;
   s_.time_s += dt;
+  Plates& plates = s_.plates;
+  if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
 }
 
 // The volume closure (docs/model-closures.md): during drying, nudge every fluid mass (density
@@ -237,10 +248,42 @@ void Simulation::check_containment() const {
   }
 }
 
+// model.md §6: L_p takes its compression value; the bottom plate touches the lowest wall particle
+// (no force yet) and stays; the top plate starts `gap` above its reach of the highest one.
 void Simulation::start_compression() {
   s_.stage = Stage::Compression;
   s_.stage_step = 0;
   Lp_m_per_s_Pa_ = p_.compression_Lp_m_per_s_Pa;
+  Plates& plates = s_.plates;
+  const auto& z = s_.wall.x.row(2);
+  const Eigen::Vector3d centroid = s_.wall.x.rowwise().mean();
+  plates.active = true;
+  plates.axis_x_m = centroid.x();
+  plates.axis_y_m = centroid.y();
+  plates.bottom_z_m = z.minCoeff() - p_.plate_range_m;
+  plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
+  plates.start_time_s = s_.time_s;
+  plates.contact_height_m = z.maxCoeff() - z.minCoeff();
+  plates.first_contact_top_z_m = std::nan("");
+  // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
+  neighbours_.invalidate();
+  compute_rates();
+}
+
+void Simulation::restore(const State& saved) {
+  if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size())
+    throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
+                     std::to_string(saved.wall.size()) + " wall particles; the case builds " +
+                     std::to_string(s_.fluid.size()) + " and " + std::to_string(s_.wall.size()));
+  s_ = saved;
+  neighbours_.invalidate();
+  compute_rates();
+}
+
+double Simulation::nominal_strain() const {
+  if (!s_.plates.active) return 0.0;
+  const auto& z = s_.wall.x.row(2);
+  return (s_.plates.contact_height_m - (z.maxCoeff() - z.minCoeff())) / s_.plates.contact_height_m;
 }
 
 }  // namespace cellsim

@@ -12,6 +12,7 @@
 #include "measures.hpp"
 #include "neighbours.hpp"
 #include "params.hpp"
+#include "plates.hpp"
 #include "cell.hpp"
 #include "state.hpp"
 #include "wall_bonds.hpp"
@@ -25,6 +26,8 @@ class Simulation {
 
   void step();                  // one kick-drift-kick step of dt
   void start_compression();     // switches L_p and places the plates (model.md §6)
+  void restore(const State& saved);  // continue from a saved state (same case geometry)
+  double nominal_strain() const;     // (H_c - H) / H_c during compression, 0 before
 
   const State& state() const { return s_; }
   State& mutable_state() { return s_; }
@@ -57,6 +60,7 @@ class Simulation {
   Bending bending_;
   NeighbourLists neighbours_;
   LennardJones lj_;
+  PlateLaw plate_law_;
   BondLaw bond_law_;
   double osmotic_Pa_;           // Pi = -P_T(X)
 

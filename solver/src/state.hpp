@@ -23,15 +23,17 @@ struct WallParticles {
 };
 
 struct Plates {
-  bool active = false;     // only during compression
-  double bottom_z_m = 0;   // plane of the fixed bottom plate
-  double top_z_m = 0;      // plane of the moving top plate
+  bool active = false;            // only during compression
+  double axis_x_m = 0, axis_y_m = 0;  // centre of the plates' footprint (the cell's centroid at the start)
+  double bottom_z_m = 0;          // plane of the fixed bottom plate
+  double top_z_m = 0;             // plane of the moving top plate
   double top_start_z_m = 0;
-  double force_top_N = 0;  // reaction on the plate (positive: pushed away from the cell)
-  double force_bottom_N = 0;
-  int contacts = 0;        // wall particles within r_pw of either plate
-  double contact_height_m = 0;  // cell height when compression starts, H_c
-  double first_contact_top_z_m = 0;  // top plate position at first contact (NaN before)
+  double start_time_s = 0;        // when compression started
+  double force_top_N = 0;         // force of the wall on the top plate, upward positive
+  double force_bottom_N = 0;      // force of the wall on the bottom plate, downward positive
+  int contacts = 0;               // wall particles within r_pw of either plate
+  double contact_height_m = 0;    // H_c: cell height when compression starts
+  double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
 };
 
 struct State {

@@ -1,0 +1,21 @@
+#pragma once
+// Compression plates, Eq 22 (model.md §3, §6): a wall particle closer than r_pw to a plate and
+// inside the plate's footprint is pushed away from it with k_pw (r_pw - d). The reaction on the
+// plate is the plate force.
+#include <Eigen/Core>
+
+#include "state.hpp"
+
+namespace cellsim {
+
+struct PlateLaw {
+  double range_m;        // r_pw
+  double stiffness_N_m;  // k_pw
+  double length_m;       // footprint along x, centred on the plates' axis
+  double width_m;        // footprint along y
+};
+
+// Adds the plate forces to wall_force and sets plates.force_top_N, force_bottom_N and contacts.
+void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force);
+
+}  // namespace cellsim

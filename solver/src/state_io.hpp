@@ -1,0 +1,24 @@
+#pragma once
+// Saving and loading the state a run can continue from (/state in a result file), and the time
+// series already recorded (so a continued run's file holds the whole history).
+#include <string>
+#include <vector>
+
+#include "h5.hpp"
+#include "measures.hpp"
+#include "state.hpp"
+
+namespace cellsim {
+
+void write_state(hid_t parent, const State& s);
+
+struct SavedRun {
+  State state;
+  std::vector<Record> records;
+  std::string case_json;
+};
+
+// Reads a complete result file; throws InputError if it is missing, incomplete or malformed.
+SavedRun read_saved_run(const std::string& path);
+
+}  // namespace cellsim

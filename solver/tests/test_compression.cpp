@@ -1,0 +1,75 @@
+// The compression stage (model.md §6, §8): strain grows with plate travel after contact; the
+// stage stops at end_strain; stresses follow from the plate force.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cli_helpers.hpp"
+#include "h5.hpp"
+
+using cellsim::testing::run_cli;
+using cellsim::testing::ScratchDir;
+namespace h5 = cellsim::h5;
+
+namespace {
+
+const char* kSmallFreshCase = R"({
+  "cell": {"n_wall": 402, "n_fluid": 400},
+  "drying": {"dryness": 1.0, "steps": 10000},
+  "compression": {"steps": 15000, "plate_speed_m_s": 1},
+  "output": {"record_every": 100, "snapshot_every": 5000}
+})";
+
+struct Series {
+  std::vector<double> stage, strain, plate_strain, force, stress, top_z;
+};
+
+Series read_series(const std::string& path) {
+  h5::Handle f = h5::open_file_readonly(path);
+  h5::Handle ts = h5::open_group(f.id(), "timeseries");
+  return {h5::read_doubles(ts.id(), "stage"), h5::read_doubles(ts.id(), "nominal_strain"),
+          h5::read_doubles(ts.id(), "plate_strain"), h5::read_doubles(ts.id(), "plate_force_top_N"),
+          h5::read_doubles(ts.id(), "plate_stress_Pa"), h5::read_doubles(ts.id(), "plate_top_z_m")};
+}
+
+}  // namespace
+
+TEST(Compression, StrainGrowsMonotonicallyWithPlateTravelAfterContact) {
+  ScratchDir dir("compression");
+  const auto c = dir.write("case.json", kSmallFreshCase);
+  const auto r = run_cli("run " + c + " -o " + dir.file("out.h5") + " --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Series s = read_series(dir.file("out.h5"));
+  int after_contact = 0;
+  double previous_strain = -1, previous_top = INFINITY;
+  for (std::size_t i = 0; i < s.stage.size(); ++i) {
+    if (s.stage[i] != 1.0) {
+      EXPECT_TRUE(std::isnan(s.force[i]));  // no plates before compression
+      continue;
+    }
+    ASSERT_LT(s.top_z[i], previous_top);  // the top plate only moves down
+    previous_top = s.top_z[i];
+    EXPECT_NEAR(s.stress[i], s.force[i] / (150e-6 * 150e-6), 1e-9 * std::abs(s.stress[i]));
+    if (s.plate_strain[i] <= 0) continue;  // before first contact
+    ++after_contact;
+    EXPECT_GT(s.strain[i], previous_strain) << "record " << i;
+    EXPECT_GT(s.force[i], 0.0) << "record " << i;
+    previous_strain = s.strain[i];
+  }
+  EXPECT_GT(after_contact, 100);
+  EXPECT_GT(previous_strain, 0.05);  // 15 us at 1 m/s squeezes the 150 um cell by ~8 %
+}
+
+TEST(Compression, StopsAtEndStrain) {
+  ScratchDir dir("end-strain");
+  const auto c = dir.write("case.json", kSmallFreshCase);
+  const auto r = run_cli("run " + c + " -o " + dir.file("out.h5") +
+                             " --set compression.end_strain=0.02 --set compression.plate_speed_m_s=5 --quiet",
+                         dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Series s = read_series(dir.file("out.h5"));
+  EXPECT_GE(s.strain.back(), 0.02);
+  EXPECT_LT(s.strain.back(), 0.03);  // stopped at once, not at compression.steps
+  h5::Handle f = h5::open_file_readonly(dir.file("out.h5"));
+  EXPECT_EQ(h5::get_attr_int(f.id(), "completed"), 1);
+}
