@@ -6,48 +6,66 @@
 
 namespace cellsim {
 
-Bending::Bending(const WallMesh& mesh, double bending_stiffness_J) : hinges_(mesh.hinges), k_b_(bending_stiffness_J) {
-  const double mean_l0 = mesh.rest_length_m.empty()
-                             ? 1.0
-                             : std::accumulate(mesh.rest_length_m.begin(), mesh.rest_length_m.end(), 0.0) /
-                                   static_cast<double>(mesh.rest_length_m.size());
+void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out) {
+  const auto n = static_cast<Eigen::Index>(mesh.triangles.size());
+  out.N.resize(3, n);
+  out.inv_norm.resize(n);
+  for (Eigen::Index t = 0; t < n; ++t) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    const Eigen::Vector3d a = x.col(tri[0]);
+    out.N.col(t) = (x.col(tri[1]) - a).cross(x.col(tri[2]) - a);
+    out.inv_norm[t] = 1.0 / out.N.col(t).norm();
+  }
+}
+
+Bending::Bending(const WallMesh& mesh, double bending_stiffness_J) : mesh_(mesh) {
+  const auto& l0 = mesh.rest_length_m;
+  const double mean_l0 = l0.empty() ? 1.0 : std::accumulate(l0.begin(), l0.end(), 0.0) / static_cast<double>(l0.size());
   // Hinges are built from the bonds in the same order, so hinge n has bond n's rest length.
-  weight_.reserve(hinges_.size());
-  for (std::size_t n = 0; n < hinges_.size(); ++n) weight_.push_back(k_b_ * mesh.rest_length_m[n] / mean_l0);
+  weight_.reserve(mesh.hinges.size());
+  for (std::size_t n = 0; n < mesh.hinges.size(); ++n) weight_.push_back(bending_stiffness_J * l0[n] / mean_l0);
 }
 
 double Bending::energy(const Eigen::Matrix3Xd& x) const {
+  TriangleNormals normals;
+  compute_triangle_normals(x, mesh_, normals);
   double e = 0;
-  for (std::size_t n = 0; n < hinges_.size(); ++n) {
-    const Hinge& h = hinges_[n];
-    const Eigen::Vector3d n1 = (x.col(h.b) - x.col(h.a)).cross(x.col(h.c) - x.col(h.a)).normalized();
-    const Eigen::Vector3d n2 = (x.col(h.a) - x.col(h.b)).cross(x.col(h.d) - x.col(h.b)).normalized();
-    const double c = n1.dot(n2);
+  for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
+    const Hinge& h = mesh_.hinges[n];
+    const double c = normals.N.col(h.t1).dot(normals.N.col(h.t2)) * normals.inv_norm[h.t1] * normals.inv_norm[h.t2];
     e += 0.5 * weight_[n] * (1.0 - c) / (1.0 + c);
   }
   return e;
 }
 
 void Bending::add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const {
-  for (std::size_t n = 0; n < hinges_.size(); ++n) {
-    const Hinge& h = hinges_[n];
-    const Eigen::Vector3d xa = x.col(h.a), xb = x.col(h.b), xc = x.col(h.c), xd = x.col(h.d);
-    // Triangle 1 = (a, b, c), triangle 2 = (b, a, d), both outward.
-    const Eigen::Vector3d e1 = xb - xa, e2 = xc - xa;  // edges of triangle 1 from a
-    const Eigen::Vector3d g1 = xa - xb, g2 = xd - xb;  // edges of triangle 2 from b
-    const Eigen::Vector3d N1 = e1.cross(e2), N2 = g1.cross(g2);
-    const double inv1 = 1.0 / N1.norm(), inv2 = 1.0 / N2.norm();
-    const Eigen::Vector3d n1 = N1 * inv1, n2 = N2 * inv2;
+  TriangleNormals normals;
+  compute_triangle_normals(x, mesh_, normals);
+  add_forces(x, normals, force);
+}
+
+void Bending::add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, Eigen::Matrix3Xd& force) const {
+  for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
+    const Hinge& h = mesh_.hinges[n];
+    const Eigen::Vector3d n1 = normals.N.col(h.t1) * normals.inv_norm[h.t1];
+    const Eigen::Vector3d n2 = normals.N.col(h.t2) * normals.inv_norm[h.t2];
     const double c = n1.dot(n2);
-    // d(n1.n2) = p1 . dN1 / |N1| + p2 . dN2 / |N2|, with p1 = n2 - c n1 and p2 = n1 - c n2.
-    const Eigen::Vector3d p1 = (n2 - c * n1) * inv1, p2 = (n1 - c * n2) * inv2;
-    // For N = (u - o) x (w - o): grad_u = (w - o) x p, grad_w = p x (u - o), grad_o = -(grad_u + grad_w).
-    const Eigen::Vector3d grad_b1 = e2.cross(p1), grad_c = p1.cross(e1);
-    const Eigen::Vector3d grad_a2 = g2.cross(p2), grad_d = p2.cross(g1);
+    // d(n1.n2) = p1 . dN1 + p2 . dN2, p1 = (n2 - c n1)/|N1|, p2 = (n1 - c n2)/|N2|. For a triangle
+    // (u, v, w), d(p . N)/du = (v - w) x p: each vertex's gradient is (next - previous) x p.
+    const Eigen::Vector3d p1 = (n2 - c * n1) * normals.inv_norm[h.t1];
+    const Eigen::Vector3d p2 = (n1 - c * n2) * normals.inv_norm[h.t2];
+    const Eigen::Vector3d xa = x.col(h.a), xb = x.col(h.b);
+    const Eigen::Vector3d grad_c = (xa - xb).cross(p1);         // triangle 1 = (a, b, c)
+    const Eigen::Vector3d grad_b1 = (x.col(h.c) - xa).cross(p1);
+    const Eigen::Vector3d grad_d = (xb - xa).cross(p2);         // triangle 2 = (b, a, d)
+    const Eigen::Vector3d grad_a2 = (x.col(h.d) - xb).cross(p2);
+    // The three gradients of one triangle sum to zero (translation invariance).
+    const Eigen::Vector3d grad_a = -(grad_b1 + grad_c) + grad_a2;
+    const Eigen::Vector3d grad_b = grad_b1 - (grad_a2 + grad_d);
     // dE/dc = -(k_b L_n / 2) * 2 / (1 + c)^2, so F = -dE/dc grad c = k_b L_n / (1 + c)^2 grad c.
     const double scale = weight_[n] / ((1.0 + c) * (1.0 + c));
-    force.col(h.a) += scale * (-(grad_b1 + grad_c) + grad_a2);
-    force.col(h.b) += scale * (grad_b1 - (grad_a2 + grad_d));
+    force.col(h.a) += scale * grad_a;
+    force.col(h.b) += scale * grad_b;
     force.col(h.c) += scale * grad_c;
     force.col(h.d) += scale * grad_d;
   }

@@ -10,18 +10,26 @@
 
 namespace cellsim {
 
+// Per-triangle area normals N = (v - u) x (w - u) and 1/|N|, shared by the geometry measures and
+// bending so they are computed once a step.
+struct TriangleNormals {
+  Eigen::Matrix3Xd N;
+  Eigen::VectorXd inv_norm;
+};
+void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out);
+
 class Bending {
  public:
   Bending(const WallMesh& mesh, double bending_stiffness_J);
 
   double energy(const Eigen::Matrix3Xd& x) const;
-  // Adds -grad E_b to force (3 x N_w).
-  void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;
+  // Adds -grad E_b to force (3 x N_w), with the triangle normals of x.
+  void add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, Eigen::Matrix3Xd& force) const;
+  void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;  // computes the normals
 
  private:
-  std::vector<Hinge> hinges_;
+  const WallMesh& mesh_;
   std::vector<double> weight_;  // k_b L_n per hinge
-  double k_b_;
 };
 
 }  // namespace cellsim

@@ -55,12 +55,17 @@ Eigen::Matrix3Xd nearest_lattice_points(int n, double* farthest) {
     for (int j = -m; j <= m; ++j)
       for (int k = -m; k <= m; ++k) candidates.emplace_back(i * i + j * j + k * k, i, j, k);
   std::partial_sort(candidates.begin(), candidates.begin() + n, candidates.end());
+  *farthest = std::sqrt(static_cast<double>(std::get<0>(candidates[static_cast<std::size_t>(n - 1)])));
+  // Store them z-major, so particles near in space are near in memory (the pair loops' locality).
+  std::sort(candidates.begin(), candidates.begin() + n, [](const auto& a, const auto& b) {
+    return std::make_tuple(std::get<3>(a), std::get<2>(a), std::get<1>(a)) <
+           std::make_tuple(std::get<3>(b), std::get<2>(b), std::get<1>(b));
+  });
   Eigen::Matrix3Xd x(3, n);
   for (int p = 0; p < n; ++p) {
     const auto& [r2, i, j, k] = candidates[static_cast<std::size_t>(p)];
     x.col(p) << i, j, k;
   }
-  *farthest = std::sqrt(static_cast<double>(std::get<0>(candidates[static_cast<std::size_t>(n - 1)])));
   return x;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "bench.hpp"
 #include "case_schema.hpp"
 #include "cell.hpp"
 #include "errors.hpp"
@@ -18,6 +19,7 @@ const char* kUsage =
     "usage:\n"
     "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--from DRIED.h5] [--quiet]\n"
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
+    "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--set ...]  median ms per step, per phase\n"
     "  cellsim params                                    the case keys (Markdown table)\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
     "  cellsim --help | --version\n"
@@ -31,7 +33,19 @@ struct Args {
   std::string command, case_path, output_path, from_path;
   std::vector<std::string> overrides;
   bool quiet = false;
+  long steps = 2000;
+  int repeats = 5;
 };
+
+long positive_int(const std::string& flag, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const long v = std::stol(text, &used);
+    if (used == text.size() && v > 0) return v;
+  } catch (const std::exception&) {
+  }
+  throw cellsim::InputError(flag + " = '" + text + "': expected a positive integer");
+}
 
 Args parse(int argc, char** argv) {
   Args a;
@@ -49,6 +63,8 @@ Args parse(int argc, char** argv) {
     else if (w == "--from") a.from_path = value(w);
     else if (w.rfind("--set=", 0) == 0) a.overrides.push_back(w.substr(6));
     else if (w == "--quiet") a.quiet = true;
+    else if (w == "--steps") a.steps = positive_int(w, value(w));
+    else if (w == "--repeats") a.repeats = static_cast<int>(positive_int(w, value(w)));
     else if (!w.empty() && w[0] == '-') throw cellsim::InputError("unknown option '" + w + "'\n" + kUsage);
     else if (a.case_path.empty()) a.case_path = w;
     else throw cellsim::InputError("unexpected argument '" + w + "'");
@@ -85,6 +101,17 @@ int dispatch(int argc, char** argv) {
     cellsim::Params p = load(a);
     cellsim::build_cell(p);  // resolves derived values and checks the geometry can be built
     std::cout << cellsim::case_to_json(p).dump(2) << "\n";
+    return 0;
+  }
+  if (a.command == "bench") {
+    // Without a case file: the paper's baseline (every key at its default).
+    cellsim::Params p = a.case_path.empty() ? cellsim::validate_case(nlohmann::json::object()) : load(a);
+    if (a.case_path.empty() && !a.overrides.empty()) {
+      nlohmann::json doc = nlohmann::json::object();
+      for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
+      p = cellsim::validate_case(doc);
+    }
+    cellsim::run_benchmark(p, {a.steps, a.repeats});
     return 0;
   }
   if (a.command == "run") {

@@ -34,7 +34,7 @@ double wall_spring_limit(const WallMesh& mesh, const Params& p, double wall_mass
 Simulation::Simulation(const Params& p, const Cell& cell)
     : p_(p),
       mesh_(cell.mesh),
-      bending_(cell.mesh, p.bending_stiffness_J),
+      bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_{p.plate_range_m, p.plate_stiffness_N_m, p.plate_length_m, p.plate_width_m},
@@ -62,39 +62,49 @@ EquationOfState Simulation::eos() const {
 }
 
 void Simulation::step() {
+  timer_.start();
   check_time_step();
   kick(0.5 * p_.dt_s);
   drift(p_.dt_s);
+  timer_.lap(Phase::Integration);
   compute_rates();
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) apply_pressure_closure();
   ++s_.step;
   ++s_.stage_step;
   check_state();
+  timer_.lap(Phase::Integration);
 }
 
 // Forces and rates at the current positions, in the order of the model.
 void Simulation::compute_rates() {
   update_geometry();
+  timer_.lap(Phase::Geometry);
   fluid_terms();
   mass_transfer();
+  timer_.lap(Phase::MassTransfer);
   wall_force_.setZero(3, s_.wall.size());
   wall_terms();
   wall_fluid_terms();
+  timer_.lap(Phase::WallFluid);
   plate_terms();
+  timer_.lap(Phase::Plates);
 }
 
-// Wall area and volume, vertex normals, and the smoothing length of Eq 6: h = (D / D0) h0.
+// Triangle normals, wall area and volume, vertex normals, and the smoothing length of Eq 6:
+// h = (D / D0) h0.
 void Simulation::update_geometry() {
   const auto& x = s_.wall.x;
+  compute_triangle_normals(x, mesh_, triangle_normals_);
   vertex_normal_.setZero(3, x.cols());
   double twice_area = 0, six_volume = 0;
-  for (const auto& t : mesh_.triangles) {
-    const Eigen::Vector3d a = x.col(t[0]), b = x.col(t[1]), c = x.col(t[2]);
-    const Eigen::Vector3d n = (b - a).cross(c - a);
-    twice_area += n.norm();
-    six_volume += a.dot(b.cross(c));
-    for (int v : t) vertex_normal_.col(v) += n;
+  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const Eigen::Index ti = static_cast<Eigen::Index>(t);
+    const Eigen::Vector3d n = triangle_normals_.N.col(ti);
+    twice_area += 1.0 / triangle_normals_.inv_norm[ti];
+    six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
+    for (int v : tri) vertex_normal_.col(v) += n;
   }
   wall_area_m2_ = 0.5 * twice_area;
   volume_m3_ = six_volume / 6.0;
@@ -107,7 +117,9 @@ void Simulation::update_geometry() {
 void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
   neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m);
+  timer_.lap(Phase::Neighbours);
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, fluid_);
+  timer_.lap(Phase::FluidPairs);
 }
 
 // Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
@@ -126,7 +138,9 @@ void Simulation::wall_terms() {
   const double ramp = s_.stage == Stage::Drying ? wall::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
   const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_);
   s_.wall_tension_N_m = tension_length / (2.0 * wall_area_m2_);
-  bending_.add_forces(s_.wall.x, wall_force_);
+  timer_.lap(Phase::WallBonds);
+  bending_.add_forces(s_.wall.x, triangle_normals_, wall_force_);
+  timer_.lap(Phase::Bending);
 }
 
 // Lennard-Jones coupling; also the outward push on the wall that the pressure closure and the

@@ -12,6 +12,7 @@
 #include "measures.hpp"
 #include "neighbours.hpp"
 #include "params.hpp"
+#include "phase_timer.hpp"
 #include "plates.hpp"
 #include "cell.hpp"
 #include "state.hpp"
@@ -35,6 +36,8 @@ class Simulation {
   const Params& params() const { return p_; }
   EquationOfState eos() const;
   Record record() const { return measure(s_, mesh_, p_, eos()); }
+  const PhaseTimer& timer() const { return timer_; }
+  PhaseTimer& timer() { return timer_; }
 
   // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
   void check_containment() const;
@@ -68,11 +71,13 @@ class Simulation {
   FluidRates fluid_;
   Eigen::Matrix3Xd wall_force_, lj_on_wall_;
   Eigen::VectorXd dm_dt_;
+  TriangleNormals triangle_normals_;
   Eigen::Matrix3Xd vertex_normal_;  // area-weighted outward normals of the wall
   double wall_area_m2_ = 0, volume_m3_ = 0;
   double initial_diameter_m_ = 0;  // D0 of Eq 6: equivalent diameter of the initial wall mesh
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;
+  PhaseTimer timer_;
 };
 
 }  // namespace cellsim

@@ -26,15 +26,17 @@ Eigen::Matrix3Xd fibonacci_sphere(int n, double radius) {
 WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::array<int, 3>> triangles) {
   WallMesh mesh;
   // Each directed edge (u -> v) of an outward triangle; its twin (v -> u) lives in the neighbour.
-  std::map<std::pair<int, int>, int> opposite;  // directed edge -> vertex opposite it in its triangle
-  for (const auto& t : triangles)
+  // directed edge -> (vertex opposite it, triangle index)
+  std::map<std::pair<int, int>, std::pair<int, int>> opposite;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int e = 0; e < 3; ++e) {
-      const int u = t[e], v = t[(e + 1) % 3], w = t[(e + 2) % 3];
-      if (!opposite.emplace(std::make_pair(u, v), w).second)
+      const auto& tri = triangles[t];
+      const int u = tri[e], v = tri[(e + 1) % 3], w = tri[(e + 2) % 3];
+      if (!opposite.emplace(std::make_pair(u, v), std::make_pair(w, static_cast<int>(t))).second)
         throw InputError("wall triangulation is not a closed oriented surface (edge " + std::to_string(u) + "-" +
                          std::to_string(v) + " appears twice)");
     }
-  for (const auto& [edge, c] : opposite) {
+  for (const auto& [edge, near] : opposite) {
     const auto [a, b] = edge;
     if (a > b) continue;  // visit each undirected edge once, from its (small, large) direction
     const auto twin = opposite.find({b, a});
@@ -42,7 +44,7 @@ WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::arr
       throw InputError("wall triangulation has an open edge " + std::to_string(a) + "-" + std::to_string(b));
     mesh.bonds.push_back({a, b});
     mesh.rest_length_m.push_back((positions.col(a) - positions.col(b)).norm());
-    mesh.hinges.push_back({a, b, c, twin->second});
+    mesh.hinges.push_back({a, b, near.first, twin->second.first, near.second, twin->second.second});
   }
   mesh.triangles = std::move(triangles);
   return mesh;

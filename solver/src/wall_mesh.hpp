@@ -8,9 +8,11 @@
 
 namespace cellsim {
 
-// Two triangles sharing edge (a, b): (a, b, c) and (b, a, d), both outward (Eq 20).
+// Two triangles sharing edge (a, b): (a, b, c) and (b, a, d), both outward (Eq 20); t1 and t2
+// are their indices in WallMesh::triangles (same normals: cyclic order is kept).
 struct Hinge {
   int a, b, c, d;
+  int t1, t2;
 };
 
 struct WallMesh {

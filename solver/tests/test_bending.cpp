@@ -56,7 +56,8 @@ TEST(Bending, ForcesSumToZeroAndFlatHingeHasNoEnergy) {
   EXPECT_LT(torque.norm(), 1e-12 * 10e-6 * force.colwise().norm().maxCoeff());
 
   WallMesh flat;
-  flat.hinges = {{0, 1, 2, 3}};
+  flat.triangles = {{0, 1, 2}, {1, 0, 3}};
+  flat.hinges = {{0, 1, 2, 3, 0, 1}};
   flat.rest_length_m = {1.0};
   Eigen::Matrix3Xd square(3, 4);
   square << 0, 1, 0, 1,  //

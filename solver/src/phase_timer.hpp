@@ -1,0 +1,34 @@
+#pragma once
+// Wall-clock time spent in each phase of the step, for `cellsim bench` (a few clock reads per
+// step: negligible next to the work they measure).
+#include <array>
+#include <chrono>
+
+namespace cellsim {
+
+enum class Phase : int {
+  Geometry, Neighbours, FluidPairs, MassTransfer, WallBonds, Bending, WallFluid, Plates, Integration, Count
+};
+inline constexpr const char* kPhaseNames[] = {"geometry (area, volume, h)", "neighbour lists",
+                                              "fluid pairs (continuity, pressure, viscous)", "mass transfer",
+                                              "wall bonds (stiff, contraction, damping)", "bending",
+                                              "wall-fluid (LJ)", "plates", "integration and checks"};
+
+class PhaseTimer {
+ public:
+  using Clock = std::chrono::steady_clock;
+  void start() { last_ = Clock::now(); }
+  void lap(Phase p) {
+    const auto now = Clock::now();
+    seconds_[static_cast<int>(p)] += std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+  }
+  double seconds(Phase p) const { return seconds_[static_cast<int>(p)]; }
+  void reset() { seconds_.fill(0.0); }
+
+ private:
+  std::array<double, static_cast<int>(Phase::Count)> seconds_{};
+  Clock::time_point last_;
+};
+
+}  // namespace cellsim
