@@ -21,6 +21,7 @@ const char* kUsage =
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
     "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--set ...]  median ms per step, per phase\n"
     "  cellsim params                                    the case keys (Markdown table)\n"
+    "  cellsim schema                                    JSON Schema of the case file\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
     "  cellsim --help | --version\n"
     "\n"
@@ -91,6 +92,10 @@ int dispatch(int argc, char** argv) {
   }
   if (a.command == "params") {
     std::cout << cellsim::reference_markdown();
+    return 0;
+  }
+  if (a.command == "schema") {
+    std::cout << cellsim::json_schema();
     return 0;
   }
   if (a.command == "outputs") {

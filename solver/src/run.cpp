@@ -84,6 +84,7 @@ void run_case(Params p, const RunOptions& options) {
       run_stage(sim, p.compression_steps, strain_reached, out, records, progress, "compression");
     }
   } catch (const NumericalFailure& e) {
+    out.write_snapshot(sim.state(), sim.eos());  // the failing state, for diagnosis
     out.fail(records, e.what());
     throw NumericalFailure(std::string(e.what()) + "; partial results in " + out.partial_path());
   }

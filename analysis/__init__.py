@@ -1,0 +1,1 @@
+"""Analysis of cellsim results: the experiment matrix, tidy tables, figures, claims and the report."""

@@ -1,0 +1,60 @@
+"""Tidy tables from the runs: one row per (case, record), and one row per case with summary
+metrics. Every case parameter is a column ('cell.turgor_kPa', ...), and so is every axis."""
+import numpy as np
+import pandas as pd
+
+from analysis.results import flatten, resolved_case, timeseries
+
+STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
+
+
+def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
+    """Stress when the nominal strain first reaches `strain` in compression (NaN if never)."""
+    c = ts[ts["stage"] == 1]
+    e, s = c["nominal_strain"].to_numpy(), c[stress_column].to_numpy()
+    above = np.nonzero(e >= strain)[0]
+    if len(above) == 0:
+        return np.nan
+    i = above[0]
+    if i == 0:
+        return s[0]
+    return s[i - 1] + (s[i] - s[i - 1]) * (strain - e[i - 1]) / (e[i] - e[i - 1])
+
+
+def summarise(ts):
+    """Per-case metrics: end of drying, stresses at fixed strains, peak force, compression changes."""
+    drying, compression = ts[ts["stage"] == 0], ts[ts["stage"] == 1]
+    first, dried = ts.iloc[0], drying.iloc[-1]
+    out = {
+        "dried_M_over_M0": dried["fluid_mass_ratio"],
+        "dried_V_over_V0": dried["volume_m3"] / first["volume_m3"],
+        "dried_A_over_A0": dried["area_m2"] / first["area_m2"],
+        "dried_mean_pressure_kPa": dried["mean_pressure_Pa"] / 1e3,
+        "dried_wall_pressure_kPa": dried["wall_pressure_Pa"] / 1e3,
+        "dried_wall_strain_mean": dried["wall_strain_mean"],
+    }
+    if len(compression):
+        start, end = compression.iloc[0], compression.iloc[-1]
+        out.update({
+            "strain_reached": compression["nominal_strain"].max(),
+            "peak_force_top_uN": compression["plate_force_top_N"].max() * 1e6,
+            "compression_V_change": end["volume_m3"] / start["volume_m3"] - 1,
+            "compression_A_change": end["area_m2"] / start["area_m2"] - 1,
+            "end_mean_pressure_kPa": end["mean_pressure_Pa"] / 1e3,
+            "end_wall_strain_mean": end["wall_strain_mean"],
+        })
+        for e in STRAINS:
+            out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
+    return out
+
+
+def tables(runs):
+    """runs: [(Case, path of its result)] -> (timeseries table, summary table)."""
+    series, summary = [], []
+    for case, path in runs:
+        ts = timeseries(path)
+        params = {"case": case.name, "dried": case.dried, "studies": " ".join(case.studies), **case.values,
+                  **flatten(resolved_case(path))}
+        series.append(ts.assign(**{k: v for k, v in params.items()}))
+        summary.append({**params, **summarise(ts)})
+    return pd.concat(series, ignore_index=True), pd.DataFrame(summary)

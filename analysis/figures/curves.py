@@ -1,0 +1,72 @@
+"""Curves family: one quantity against time or strain, lines by an axis, panels by an axis or by
+quantity, with experimental reference curves on stress-strain panels (figures 4-7, 9-16, 18)."""
+import numpy as np
+
+from analysis import quantities
+from analysis.figures.common import grid, ordered, panel_letter, value_label
+from analysis.references import load as load_reference
+
+
+def draw(config, fig, series, root="."):
+    """series: the tidy time series table restricted to this figure's cases."""
+    spec = config["figures"][fig]
+    x, ys = spec["x"], spec["y"]
+    stage = spec.get("stage", "compression")
+    if stage != "all":
+        series = series[series["stage"] == (1 if stage == "compression" else 0)]
+    line_axes = spec.get("lines") or []
+    line_axes = [line_axes] if isinstance(line_axes, str) else line_axes
+    panel_axis = spec.get("panels")
+    panel_values = ordered(series[panel_axis], spec.get("panel_order")) if panel_axis else [None]
+    panels = [(y, pv) for pv in panel_values for y in ys]
+
+    figure, axes = grid(1, len(panels), sharey=len(ys) == 1)
+    for k, ((y, pv), ax) in enumerate(zip(panels, axes[0])):
+        data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
+        groups = sorted(data.groupby(line_axes) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
+        colours = _colours(len(groups))
+        for (key, curve), colour in zip(groups, colours):
+            key = key if isinstance(key, tuple) else (key,)
+            label = ", ".join(value_label(config, a, v) for a, v in zip(line_axes, key))
+            curve = curve.sort_values("time_s")
+            ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.4,
+                    label=label or None)
+        if x == "nominal_strain" and y == "plate_stress_Pa":
+            _draw_references(config, spec, ax, root)
+        title = panel_letter(k) if len(panels) > 1 else ""
+        if pv is not None:
+            title += " " + value_label(config, panel_axis, pv)
+        ax.set_title(title.strip(), fontsize=10)
+        ax.set_xlabel(quantities.label(x))
+        ax.set_ylabel(quantities.label(y))
+        ax.grid(alpha=0.3)
+        if stage == "all" and x == "time_s":
+            _mark_compression_start(ax, data)
+    axes[0][-1].legend(fontsize=7, loc="best")
+    figure.suptitle(spec["title"], fontsize=11)
+    return figure
+
+
+def _colours(n):
+    import matplotlib.pyplot as plt
+    cmap = plt.get_cmap("viridis")
+    return [cmap(0.9 * i / max(1, n - 1)) for i in range(n)]
+
+
+def _mark_compression_start(ax, data):
+    starts = data[data["stage"] == 1]["time_s"]
+    if len(starts):
+        ax.axvline(starts.min() * 1e6, color="grey", ls=":", lw=1)
+
+
+def _draw_references(config, spec, ax, root):
+    """Reference curves share the axes (strain as a fraction, stress in kPa), cut at the
+    simulated strain range so the simulation stays readable."""
+    styles = ["--", "-.", ":"]
+    x_max = ax.get_xlim()[1]
+    for i, name in enumerate(spec.get("references", [])):
+        ref = config["references"][name]
+        strain, stress_kPa = load_reference(ref, root)
+        keep = strain <= max(x_max, 1e-9)
+        ax.plot(strain[keep], stress_kPa[keep], color="black", ls=styles[i % len(styles)], lw=1.1,
+                label=ref["label"])

@@ -1,0 +1,86 @@
+"""Shapes family: mid-plane slices (y = cell centre) of particle snapshots; the wall is the
+intersection of its triangles with the plane, the fluid particles near the plane are dots, and the
+plates are drawn where they are (figures 2, 3, 8, 17)."""
+import numpy as np
+from matplotlib.collections import LineCollection
+
+from analysis.figures.common import grid, moment_label, ordered, panel_letter, value_label
+from analysis.results import pick_snapshot
+
+
+def wall_section(wall, triangles, y0):
+    """Segments where the plane y = y0 cuts the wall triangles (x, z pairs)."""
+    d = wall[:, 1] - y0
+    segments = []
+    for tri in triangles:
+        points = []
+        for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+            if (d[a] < 0) != (d[b] < 0):
+                t = d[a] / (d[a] - d[b])
+                p = wall[a] + t * (wall[b] - wall[a])
+                points.append((p[0], p[2]))
+        if len(points) == 2:
+            segments.append(points)
+    return np.array(segments)
+
+
+def draw_slice(ax, snap, plate_length_m, scale=1e6):
+    wall, fluid = snap["wall"], snap["fluid"]
+    centre = wall.mean(axis=0)
+    segments = wall_section(wall, snap["triangles"], centre[1])
+    if len(segments):
+        ax.add_collection(LineCollection((segments - centre[[0, 2]]) * scale, colors="darkgreen", linewidths=1.3))
+    spacing = np.median(np.abs(np.diff(np.sort(fluid[:, 1])))[np.abs(np.diff(np.sort(fluid[:, 1]))) > 0]) \
+        if len(fluid) > 1 else 1e-6
+    near = np.abs(fluid[:, 1] - centre[1]) < max(spacing, 2e-6) * 2
+    ax.scatter((fluid[near, 0] - centre[0]) * scale, (fluid[near, 2] - centre[2]) * scale, s=4, c="tab:blue",
+               alpha=0.6, linewidths=0)
+    half = 0.5 * plate_length_m * scale
+    for z in (snap["plate_top_z_m"], snap["plate_bottom_z_m"]):
+        if np.isfinite(z):
+            ax.plot([-half, half], [(z - centre[2]) * scale] * 2, color="black", lw=2.5)
+    ax.set_aspect("equal")
+    ax.set_xlim(-half * 1.1, half * 1.1)
+    ax.set_ylim(-half * 1.1, half * 1.1)
+    ax.tick_params(labelsize=7)
+
+
+def draw(config, fig, runs, cases):
+    """runs: {case name: (result path, dried path)}; cases: {name: Case} of this figure."""
+    spec = config["figures"][fig]
+    moments = spec.get("moments", ["end"])
+    row_axis, col_axis = spec.get("rows"), spec.get("cols")
+
+    def values(axis, order_key):
+        if axis == "moment":
+            return moments
+        if axis is None:
+            return [None]
+        return ordered([c.values[axis] for c in cases.values()], spec.get(order_key))
+
+    rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
+    figure, axes = grid(len(rows), len(cols), panel_w=2.4, panel_h=2.4)
+    for i, rv in enumerate(rows):
+        for j, cv in enumerate(cols):
+            ax = axes[i][j]
+            chosen = {row_axis: rv, col_axis: cv}
+            moment = chosen.get("moment", moments[0])
+            match = [c for c in cases.values()
+                     if all(a in (None, "moment") or np.isclose(c.values[a], v) for a, v in chosen.items())]
+            if not match:
+                ax.set_axis_off()
+                continue
+            path, dried = runs[match[0].name]
+            snap = pick_snapshot(path, moment, dried)
+            plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
+            draw_slice(ax, snap, plate_length)
+            label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
+            label.append(moment_label(moment))
+            ax.set_title(f"{panel_letter(i * len(cols) + j)} " + ", ".join(label) + f"\nt = {snap['time_s'] * 1e6:.1f} us",
+                         fontsize=7)
+            if j == 0:
+                ax.set_ylabel("z [um]", fontsize=8)
+            if i == len(rows) - 1:
+                ax.set_xlabel("x [um]", fontsize=8)
+    figure.suptitle(spec["title"] + " (mid-plane slice: wall green, fluid blue, plates black)", fontsize=10)
+    return figure

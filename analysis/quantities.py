@@ -1,0 +1,41 @@
+"""How the solver's time series are shown: label and the factor from SI to the unit shown.
+The names are those of `cellsim outputs` (tests/test_analysis.py keeps them in step)."""
+
+QUANTITIES = {
+    "time_s": ("time [us]", 1e6),
+    "stage": ("stage (0 drying, 1 compression)", 1.0),
+    "step": ("step", 1.0),
+    "fluid_mass_kg": ("fluid mass [ng]", 1e12),
+    "fluid_mass_ratio": ("M_f / M_f0", 1.0),
+    "mean_pressure_Pa": ("mean fluid pressure [kPa]", 1e-3),
+    "area_m2": ("wall area [10^3 um^2]", 1e9),
+    "volume_m3": ("cell volume [10^6 um^3]", 1e12),
+    "equivalent_diameter_m": ("equivalent diameter [um]", 1e6),
+    "smoothing_length_m": ("smoothing length h [um]", 1e6),
+    "cell_height_m": ("cell height [um]", 1e6),
+    "equatorial_radius_m": ("equatorial radius [um]", 1e6),
+    "kinetic_energy_fluid_J": ("fluid kinetic energy [pJ]", 1e12),
+    "kinetic_energy_wall_J": ("wall kinetic energy [pJ]", 1e12),
+    "wall_strain_mean": ("mean wall bond strain", 1.0),
+    "wall_tension_N_m": ("mean wall tension [N/m]", 1.0),
+    "wall_pressure_Pa": ("pressure carried by the wall [kPa]", 1e-3),
+    "plate_top_z_m": ("top plate height [um]", 1e6),
+    "plate_bottom_z_m": ("bottom plate height [um]", 1e6),
+    "plate_force_top_N": ("top-plate force [uN]", 1e6),
+    "plate_force_bottom_N": ("bottom-plate force [uN]", 1e6),
+    "contact_area_m2": ("contact area [um^2]", 1e12),
+    "contact_count": ("wall particles in contact", 1.0),
+    "nominal_strain": ("nominal strain (H_c - H)/H_c", 1.0),
+    "plate_strain": ("plate strain", 1.0),
+    "plate_stress_Pa": ("plate stress [kPa]", 1e-3),
+    "section_stress_Pa": ("section stress [kPa]", 1e-3),
+    "contact_stress_Pa": ("contact stress [kPa]", 1e-3),
+}
+
+
+def label(name):
+    return QUANTITIES[name][0]
+
+
+def scale(name):
+    return QUANTITIES[name][1]

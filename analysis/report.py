@@ -1,0 +1,74 @@
+"""The reproduction report (HTML): intro, the paper's claims against this run, every figure with its
+caption, the run matrix, and the model closures. Sources: paper/report_intro.md, docs/model-closures.md."""
+import datetime
+import html
+import os
+import pathlib
+
+import markdown
+
+from analysis.matrix import figure_cases
+
+
+def caption(config, fig, cases):
+    spec = config["figures"][fig]
+    names = figure_cases(config, fig, cases)
+    text = f"{spec['title']}. {spec.get('caption', '')} Study '{spec['study']}', {len(names)} cases"
+    if spec.get("where"):
+        text += " with " + ", ".join(f"{k} = {v}" for k, v in spec["where"].items())
+    text += "."
+    refs = spec.get("references", [])
+    if refs:
+        text += " Reference curves: " + "; ".join(
+            f"{config['references'][r]['label']}: {config['references'][r]['provenance']}" for r in refs) + "."
+        text += " No dried-apple reference data are available; none are drawn."
+    return text
+
+
+def claims_table(rows):
+    out = ["<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
+           "<th>agree if</th><th>verdict</th></tr>"]
+    for r in rows:
+        value = "" if r["value"] != r["value"] else f"{r['value']:.3g}"
+        out.append(f"<tr class='{r['verdict'].replace(' ', '-')}'><td>{html.escape(r['claim'])}</td><td>{r['figure']}</td>"
+                   f"<td>{html.escape(r['measured'])}</td><td>{value}</td><td>{html.escape(r['threshold'])}</td>"
+                   f"<td><b>{r['verdict']}</b></td></tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def matrix_table(summary, axes):
+    columns = ["case"] + list(axes) + ["studies", "dried_M_over_M0", "dried_V_over_V0", "dried_mean_pressure_kPa",
+                                       "strain_reached", "stress_kPa_at_0.05", "stress_kPa_at_0.10", "peak_force_top_uN"]
+    columns = [c for c in columns if c in summary.columns]
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+    body = []
+    for _, row in summary[columns].iterrows():
+        cells = "".join(f"<td>{v:.4g}</td>" if isinstance(v, float) else f"<td>{html.escape(str(v))}</td>" for v in row)
+        body.append(f"<tr>{cells}</tr>")
+    return f"<table><tr>{head}</tr>{''.join(body)}</table>"
+
+
+def write(path, config, cases, summary, claim_rows, figure_files, root="."):
+    root = pathlib.Path(root)
+    here = pathlib.Path(path).parent
+    parts = [markdown.markdown((root / "paper" / "report_intro.md").read_text())]
+    parts.append(f"<p class='meta'>Generated {datetime.date.today().isoformat()} from {len(cases)} cases "
+                 f"(output folder <code>{html.escape(config['output_dir'])}</code>).</p>")
+    parts.append("<h2>The paper's claims and this run</h2>")
+    parts.append(claims_table(claim_rows))
+    parts.append("<h2>Figures</h2>")
+    for fig, png in figure_files.items():
+        rel = os.path.relpath(png, here)
+        parts.append(f"<figure id='{fig}'><img src='{html.escape(rel)}' alt='{fig}'>"
+                     f"<figcaption><b>{fig}.</b> {html.escape(caption(config, fig, cases))}</figcaption></figure>")
+    parts.append("<h2>Run matrix</h2>")
+    parts.append(matrix_table(summary, config["axes"]))
+    parts.append("<h2>Model closures</h2>")
+    parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
+    style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
+             "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
+             "img{max-width:100%}figure{margin:2em 0}.agree td:last-child{color:green}"
+             ".disagree td:last-child{color:#b00}.not-run td:last-child{color:grey}")
+    pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>cellsim reproduction report"
+                                  f"</title><style>{style}</style></head><body>{''.join(parts)}</body></html>\n")

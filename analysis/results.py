@@ -1,0 +1,77 @@
+"""Reading cellsim result files (HDF5): time series, snapshots, the resolved case."""
+import json
+
+import h5py
+import numpy as np
+import pandas as pd
+
+
+class IncompleteResult(RuntimeError):
+    pass
+
+
+def open_result(path):
+    f = h5py.File(path, "r")
+    if f.attrs.get("completed", 0) != 1:
+        f.close()
+        raise IncompleteResult(f"{path}: not a completed cellsim result")
+    return f
+
+
+def timeseries(path):
+    """All /timeseries datasets as a DataFrame (SI units, one row per record)."""
+    with open_result(path) as f:
+        return pd.DataFrame({name: np.asarray(d) for name, d in f["timeseries"].items()})
+
+
+def resolved_case(path):
+    with open_result(path) as f:
+        return json.loads(f.attrs["case_json"])
+
+
+def flatten(case):
+    """{'cell': {'n_wall': 2067}} -> {'cell.n_wall': 2067}"""
+    return {f"{section}.{key}": value for section, keys in case.items() if isinstance(keys, dict)
+            for key, value in keys.items()}
+
+
+def snapshots(path):
+    """[(group name, time_s, stage)] in time order."""
+    with open_result(path) as f:
+        out = [(name, float(g.attrs["time_s"]), int(g.attrs["stage"])) for name, g in f["snapshots"].items()]
+    return sorted(out, key=lambda s: s[1])
+
+
+def snapshot(path, group):
+    """Positions, plates and triangles of one snapshot (SI)."""
+    with open_result(path) as f:
+        g = f["snapshots"][group]
+        return {
+            "wall": g["wall_positions"][()], "fluid": g["fluid_positions"][()],
+            "pressure": g["fluid_pressure"][()], "time_s": float(g.attrs["time_s"]),
+            "stage": int(g.attrs["stage"]), "plate_top_z_m": float(g.attrs["plate_top_z_m"]),
+            "plate_bottom_z_m": float(g.attrs["plate_bottom_z_m"]), "triangles": f["mesh/triangles"][()],
+        }
+
+
+def pick_snapshot(path, moment, dried_path=None):
+    """A snapshot by moment: 'end_of_drying' (last drying snapshot, from the dried file if the
+    compression file has none), 'end', or 'compression_K' (K-th of 4 evenly spaced in compression)."""
+    snaps = snapshots(path)
+    if moment == "end":
+        return snapshot(path, snaps[-1][0])
+    if moment == "end_of_drying":
+        drying = [s for s in snaps if s[2] == 0]
+        if drying:
+            return snapshot(path, drying[-1][0])
+        if dried_path is None:
+            raise ValueError(f"{path}: no drying snapshot and no dried file given")
+        return snapshot(dried_path, snapshots(dried_path)[-1][0])
+    if moment.startswith("compression_"):
+        k = int(moment.split("_")[1])
+        compression = [s for s in snaps if s[2] == 1]
+        if not compression:
+            raise ValueError(f"{path}: no compression snapshot")
+        index = min(len(compression) - 1, round(k * (len(compression) - 1) / 4))
+        return snapshot(path, compression[index][0])
+    raise ValueError(f"unknown moment '{moment}'")

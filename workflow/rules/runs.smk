@@ -1,0 +1,63 @@
+# One case file per case and per dried state; dry once, compress every case from its dried state.
+import json
+
+wildcard_constraints:
+    case="[A-Za-z0-9_.+-]+",
+    dried="[A-Za-z0-9_.+-]+",
+
+
+rule case_file:
+    output:
+        f"{OUT}/cases/{{case}}.json",
+    params:
+        case=lambda w: CASES[w.case].case,
+    run:
+        with open(output[0], "w") as out:
+            out.write(matrix.case_json(params.case))
+
+
+rule dried_case_file:
+    output:
+        f"{OUT}/cases/dried/{{dried}}.json",
+    params:
+        case=lambda w: DRIED[w.dried],
+    run:
+        with open(output[0], "w") as out:
+            out.write(matrix.case_json(params.case))
+
+
+rule dry:
+    input:
+        exe=SOLVER,
+        case=f"{OUT}/cases/dried/{{dried}}.json",
+    output:
+        h5=f"{OUT}/runs/dried/{{dried}}.h5",
+        wall=f"{OUT}/runs/dried/{{dried}}.wall.xdmf",
+        fluid=f"{OUT}/runs/dried/{{dried}}.fluid.xdmf",
+    log:
+        f"{OUT}/logs/dry/{{dried}}.log",
+    threads: job_resources("dry", "threads", 1)
+    resources:
+        mem_mb=job_resources("dry", "mem_mb", 1000),
+        runtime=job_resources("dry", "runtime_min", 30),
+    shell:
+        "{input.exe} run {input.case} --set compression.steps=0 -o {output.h5} > {log} 2>&1"
+
+
+rule compress:
+    input:
+        exe=SOLVER,
+        case=f"{OUT}/cases/{{case}}.json",
+        dried=lambda w: dried_file(CASES[w.case].dried),
+    output:
+        h5=f"{OUT}/runs/{{case}}.h5",
+        wall=f"{OUT}/runs/{{case}}.wall.xdmf",
+        fluid=f"{OUT}/runs/{{case}}.fluid.xdmf",
+    log:
+        f"{OUT}/logs/compress/{{case}}.log",
+    threads: job_resources("compress", "threads", 1)
+    resources:
+        mem_mb=job_resources("compress", "mem_mb", 1000),
+        runtime=job_resources("compress", "runtime_min", 20),
+    shell:
+        "{input.exe} run {input.case} --from {input.dried} -o {output.h5} > {log} 2>&1"

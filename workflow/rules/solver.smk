@@ -1,0 +1,14 @@
+# Builds cellsim with CMake (Release) when a source changes.
+rule build_solver:
+    input:
+        "CMakeLists.txt",
+        "solver/CMakeLists.txt",
+        expand("solver/src/{name}", name=sorted(glob_wildcards("solver/src/{name}").name)),
+    output:
+        SOLVER,
+    log:
+        f"{OUT}/logs/build_solver.log",
+    threads: workflow.cores
+    shell:
+        "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
+        "cmake --build build -j{threads} --target cellsim) > {log} 2>&1"
