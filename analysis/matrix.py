@@ -88,6 +88,22 @@ def check(config, root="."):
                 raise ConfigError(f"{where}.references: unknown reference '{ref}'; known: {sorted(references)}")
         if not figure_cases(config, fig, expand(config)):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
+    check_cases(config, root)
+
+
+def check_cases(config, root="."):
+    """Every case the studies make must be a valid cellsim case (ranges of the solver's schema),
+    so a bad study value stops the workflow before any job runs, naming study, axis and value."""
+    import jsonschema
+    schema = json.loads((pathlib.Path(root) / "config" / "schema" / "case.schema.json").read_text())
+    validator = jsonschema.Draft7Validator(schema)
+    for case in expand(config).values():
+        error = next(iter(sorted(validator.iter_errors(case.case), key=lambda e: list(e.path))), None)
+        if error is not None:
+            key = ".".join(str(p) for p in error.path)
+            axis = next((a for a, spec in config["axes"].items() if spec["key"] == key), None)
+            origin = (f"studies {', '.join(case.studies)}: axis {axis}" if axis else "base or a coupled value")
+            raise ConfigError(f"{origin}: case {case.name} has {key} = {error.instance!r}: {error.message}")
 
 
 def _by_label(config):

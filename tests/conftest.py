@@ -1,11 +1,12 @@
 """Shared fixtures: where the built solver is, and the repository root."""
 import os
 import pathlib
-import shutil
+import sys
 
 import pytest
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the analysis package
 
 
 @pytest.fixture(scope="session")

@@ -23,7 +23,8 @@ def draw(config, fig, series, root="."):
     figure, axes = grid(1, len(panels), sharey=len(ys) == 1)
     for k, ((y, pv), ax) in enumerate(zip(panels, axes[0])):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
-        groups = sorted(data.groupby(line_axes) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
+        grouper = line_axes[0] if len(line_axes) == 1 else line_axes
+        groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
         colours = _colours(len(groups))
         for (key, curve), colour in zip(groups, colours):
             key = key if isinstance(key, tuple) else (key,)

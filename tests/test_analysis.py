@@ -1,0 +1,108 @@
+"""The analysis package on its own: matrix expansion, quantities, references, metrics, claims, a figure."""
+import subprocess
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from analysis import aggregate, claims, matrix, quantities, references
+from analysis.figures import curves
+
+
+@pytest.fixture(scope="module")
+def config(root):
+    return yaml.safe_load((root / "config" / "config.yaml").read_text())
+
+
+def test_matrix_deduplicates_and_shares_dried_states(config):
+    cases = matrix.expand(config)
+    assert len(cases) == 48
+    baseline = cases["D150_G18_P200_t6_v1_X1"]
+    assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size"}
+    fast = cases["D150_G18_P200_t6_v10_X0.5"]
+    assert fast.dried == cases["D150_G18_P200_t6_v1_X0.5"].dried == "D150_G18_P200_t6_X0.5"
+    assert fast.case["compression"]["plate_speed_m_s"] == 10 and fast.case["drying"]["dryness"] == 0.5
+    assert len(matrix.dried_states(cases)) == 39
+
+
+def test_coupled_values_follow_their_axis(config):
+    big = matrix.expand(config)["D200_G18_P200_t6_v1_X0.1"]
+    assert big.case["cell"] == {**config["base"]["cell"], "diameter_um": 200, "n_wall": 2516, "n_fluid": 3708}
+    small = matrix.expand(config)["D150_G18_P200_t6_v1_X0.1"]
+    assert small.case["cell"]["n_wall"] == 2067
+
+
+def test_names_do_not_depend_on_axis_order(config):
+    reordered = dict(config, axes=dict(reversed(list(config["axes"].items()))))
+    assert list(matrix.expand(reordered)) == list(matrix.expand(config))
+
+
+def test_figure_cases_apply_where(config):
+    cases = matrix.expand(config)
+    assert len(matrix.figure_cases(config, "fig07", cases)) == 6   # 200 kPa, six dryness levels
+    assert len(matrix.figure_cases(config, "fig10", cases)) == 6   # two dryness x three turgor
+    assert len(matrix.figure_cases(config, "fig11", cases)) == 12  # 3 dryness x 4 speeds
+
+
+def test_quantities_are_the_solvers_time_series(cellsim):
+    table = subprocess.run([cellsim, "outputs"], check=True, capture_output=True, text=True).stdout
+    names = {line.split("`/timeseries/")[1].split("`")[0] for line in table.splitlines() if "/timeseries/" in line}
+    assert names == set(quantities.QUANTITIES)
+
+
+def test_reference_reconstruction_honours_published_numbers(config, root):
+    strain, stress_kPa = references.load(config["references"]["chakespari_red_delicious"], root)
+    assert strain[-1] == pytest.approx(0.312) and stress_kPa[-1] == pytest.approx(370, rel=1e-4)
+    initial_slope_MPa = (stress_kPa[1] - stress_kPa[0]) / (strain[1] - strain[0]) / 1e3
+    assert initial_slope_MPa == pytest.approx(0.93, rel=0.05)
+    assert np.all(np.diff(stress_kPa) > 0)
+
+
+def test_reference_units_convert(tmp_path):
+    (tmp_path / "r.csv").write_text("strain_pct,stress\n5,10\n10,30\n")
+    spec = {"file": "r.csv", "strain_unit": "%", "stress_unit": "MPa", "header_rows": 1}
+    strain, stress_kPa = references.load(spec, tmp_path)
+    assert list(strain) == [0.05, 0.10] and list(stress_kPa) == [1e4, 3e4]
+
+
+def synthetic_series(stiffness_kPa, name):
+    """A compression whose stress is stiffness x strain, after a drying record."""
+    strain = np.linspace(0, 0.2, 21)
+    rows = {"stage": [0.0] + [1.0] * 21, "nominal_strain": [np.nan] + list(strain),
+            "plate_stress_Pa": [np.nan] + list(stiffness_kPa * 1e3 * strain),
+            "time_s": np.arange(22) * 1e-6, "plate_force_top_N": [np.nan] + list(stiffness_kPa * strain * 1e-3),
+            "volume_m3": [1.0] * 22, "area_m2": [1.0] * 22, "fluid_mass_ratio": [1.0] * 22,
+            "mean_pressure_Pa": [2e5] * 22, "wall_pressure_Pa": [2e5] * 22, "wall_strain_mean": [0.001] * 22}
+    return pd.DataFrame(rows).assign(case=name)
+
+
+def test_stress_at_strain_interpolates_on_first_crossing():
+    ts = synthetic_series(500, "a")
+    assert aggregate.stress_at_strain(ts, 0.05) == pytest.approx(25e3)
+    assert aggregate.stress_at_strain(ts, 0.125) == pytest.approx(62.5e3)
+    assert np.isnan(aggregate.stress_at_strain(ts, 0.5))
+
+
+def test_claims_compare_fresh_and_dried(config):
+    base = {axis: matrix.get_key(config["base"], spec["key"]) for axis, spec in config["axes"].items()}
+    rows = []
+    for dryness, stiffness in [(1.0, 900.0), (0.1, 400.0)]:
+        values = dict(base, dryness=dryness)
+        rows.append({**values, **aggregate.summarise(synthetic_series(stiffness, "x"))})
+    verdicts = {r["claim"]: r for r in claims.evaluate(pd.DataFrame(rows), base)}
+    stiffer = verdicts["Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1, 200 kPa)"]
+    assert stiffer["value"] == pytest.approx(900 / 400) and stiffer["verdict"] == "agree"
+    assert verdicts["G = 18 and 0.18 MPa give virtually overlapping curves"]["verdict"] == "not run"
+
+
+def test_curves_figure_draws_one_line_per_case_and_the_references(config, root):
+    series = pd.concat([synthetic_series(900, "a").assign(dryness=1.0, turgor_kPa=200.0),
+                        synthetic_series(400, "b").assign(dryness=0.1, turgor_kPa=200.0)])
+    figure = curves.draw(config, "fig07", series, root)
+    lines = figure.axes[0].get_lines()
+    labels = [line.get_label() for line in lines]
+    assert "X/X0 = 1" in labels and "X/X0 = 0.1" in labels
+    assert sum("reconstructed" in label for label in labels) == 2
+    simulated = next(line for line in lines if line.get_label() == "X/X0 = 1")
+    assert simulated.get_ydata()[-1] == pytest.approx(900 * 0.2)  # kPa
