@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -29,9 +30,12 @@ WallAndFluid build_geometry(double radius, int n_wall, int n_fluid, std::optiona
   g.r0_m = r0 ? *r0 : kR0OverCircumradius * largest_circumradius(g.wall_x, g.mesh.triangles);
   g.fill_gap_m = fill_gap ? *fill_gap : kFillGapOverR0 * g.r0_m;
   const double fill_radius = radius - g.fill_gap_m;
-  if (!(fill_radius > 0))
-    throw InputError("cell.fill_gap_um = " + std::to_string(g.fill_gap_m * 1e6) +
-                     ": must be smaller than the cell radius " + std::to_string(radius * 1e6) + " um");
+  if (!(fill_radius > 0)) {
+    std::ostringstream msg;
+    msg << "cell.fill_gap_um = " << g.fill_gap_m * 1e6 << ": must be smaller than the cell radius " << radius * 1e6
+        << " um" << (fill_gap ? "" : " (it defaults to 0.7 r0: set coupling.r0_um or cell.fill_gap_um)");
+    throw InputError(msg.str());
+  }
   double farthest = 0;
   const Eigen::Matrix3Xd unit = nearest_lattice_points(n_fluid, &farthest);
   // Largest spacing with every point inside the fill radius; a lone particle sits at the centre.

@@ -11,6 +11,7 @@
 #include "errors.hpp"
 #include "measures.hpp"
 #include "run.hpp"
+#include "simulation.hpp"
 #include "version.hpp"
 
 namespace {
@@ -104,7 +105,8 @@ int dispatch(int argc, char** argv) {
   }
   if (a.command == "validate") {
     cellsim::Params p = load(a);
-    cellsim::build_cell(p);  // resolves derived values and checks the geometry can be built
+    const cellsim::Cell cell = cellsim::build_cell(p);  // resolves derived values, checks the geometry
+    cellsim::Simulation check(p, cell);                    // and the time step's static limit
     std::cout << cellsim::case_to_json(p).dump(2) << "\n";
     return 0;
   }

@@ -61,11 +61,11 @@ void run_case(Params p, const RunOptions& options) {
                        (dried.state.stage == Stage::Drying ? "drying" : "compression") +
                        ", not the end of drying (run it with compression.steps = 0)");
   }
+  Simulation sim(p, cell);  // refuses a time step over the wall-spring limit, before any output
   ResultFile out(options.output_path);
   out.write_header(resolved);
   out.write_mesh(cell.mesh, static_cast<long>(p.n_fluid));
 
-  Simulation sim(p, cell);
   std::vector<Record> records;
   if (options.from_path.empty()) {
     records.push_back(sim.record());

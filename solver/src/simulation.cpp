@@ -52,6 +52,12 @@ Simulation::Simulation(const Params& p, const Cell& cell)
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
   wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, p_, cell.wall_mass_kg, cell.wall_x.cols());
+  if (p_.dt_s > wall_spring_dt_limit_s_) {  // known before the first step: bad input, not a blow-up
+    std::ostringstream msg;
+    msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
+        << wall_spring_dt_limit_s_ * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
+    throw InputError(msg.str());
+  }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
   initial_diameter_m_ = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
   compute_rates();

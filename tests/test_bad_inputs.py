@@ -1,0 +1,104 @@
+"""Bad input never crashes, hangs or passes silently: every malformed case file, override and workflow
+config gives a non-zero exit and a message naming the problem, and leaves nothing under the output
+name. The case files and configs are in tests/bad_inputs/. Run with CELLSIM pointing at a sanitizer
+build to also check that none of them trips AddressSanitizer or UndefinedBehaviorSanitizer."""
+import pathlib
+import subprocess
+
+import pytest
+
+HERE = pathlib.Path(__file__).parent / "bad_inputs"
+
+# case file -> what its message must name
+CASES = {
+    "syntax_trailing_comma.json": "not valid JSON", "syntax_unclosed.json": "not valid JSON",
+    "syntax_single_quotes.json": "not valid JSON", "syntax_empty.json": "not valid JSON",
+    "syntax_nan_literal.json": "not valid JSON", "syntax_comment.json": "not valid JSON",
+    "not_an_object.json": "JSON object", "unknown_section.json": "walls.G_MPa",
+    "unknown_key.json": "wall.shear_modulus", "misspelt_key_case.json": "did you mean 'wall.G_MPa'",
+    "misspelt_dryness.json": "did you mean 'drying.dryness'", "section_not_object.json": "cell = 150",
+    "type_string_number.json": 'cell.turgor_kPa = "200"', "type_bool.json": "drying.dryness = true",
+    "type_array.json": "cell.diameter_um = [150]", "type_null_required.json": "wall.G_MPa = null",
+    "type_fractional_count.json": "cell.n_fluid = 3082.5", "overflow_inf.json": "wall.thickness_um = 1e999",
+    "overflow_negative_inf.json": "cell.turgor_kPa = -1e999", "negative_diameter.json": "cell.diameter_um = -150",
+    "zero_diameter.json": "cell.diameter_um = 0", "zero_fluid.json": "cell.n_fluid = 0",
+    "negative_steps.json": "drying.steps = -5", "zero_dt.json": "time.dt_ns = 0",
+    "zero_record_every.json": "output.record_every = 0", "dryness_above_one.json": "drying.dryness = 1.2",
+    "dryness_zero.json": "drying.dryness = 0", "dryness_negative.json": "drying.dryness = -0.5",
+    "end_strain_one.json": "compression.end_strain = 1.0", "too_few_wall_particles.json": "cell.n_wall = 3",
+    "fill_gap_too_large.json": "cell.fill_gap_um = 90", "contraction_ratio_one.json": "wall.contraction_ratio = 1.0",
+    "description_not_string.json": "description = 42", "dt_too_large.json": "wall-spring stability limit",
+}
+
+# workflow config (merged over config/config.yaml) -> what the message must name
+CONFIGS = {
+    "yaml_syntax.yaml": "yaml_syntax.yaml", "yaml_tab_indent.yaml": "yaml_tab_indent.yaml",
+    "unknown_top_key.yaml": "colour", "base_unknown_key.yaml": "G_Mpa", "base_bad_range.yaml": "2",
+    "base_wrong_type.yaml": "many", "study_unknown_axis.yaml": "humidity",
+    "study_value_out_of_range.yaml": "cell.turgor_kPa = -100", "study_empty_values.yaml": "[]",
+    "study_value_string.yaml": "half", "figure_unknown_family.yaml": "pie",
+    "figure_unknown_quantity.yaml": "stres", "figure_unknown_reference.yaml": "oey2007",
+    "reference_missing_file.yaml": "none.csv", "reference_bad_unit.yaml": "permille",
+}
+
+
+def run(cmd, cwd=None):
+    done = subprocess.run(cmd, capture_output=True, text=True, timeout=120, cwd=cwd)
+    assert done.returncode >= 0, f"killed by signal {-done.returncode}: {done.stderr}"
+    for marker in ("Sanitizer", "runtime error:", "Segmentation", "core dumped", "terminate called"):
+        assert marker not in done.stderr, done.stderr
+    return done
+
+
+def test_every_bad_file_is_listed():
+    assert sorted(p.name for p in (HERE / "cases").iterdir()) == sorted(CASES)
+    assert sorted(p.name for p in (HERE / "configs").iterdir()) == sorted(CONFIGS)
+    assert len(CASES) + len(CONFIGS) >= 30
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_bad_case_file(cellsim, tmp_path, name):
+    out = tmp_path / "out.h5"
+    done = run([cellsim, "run", str(HERE / "cases" / name), "-o", str(out), "--quiet"])
+    assert done.returncode == 2, done.stderr
+    assert CASES[name] in done.stderr, done.stderr
+    assert not out.exists() and not (tmp_path / "out.h5.partial").exists()
+    assert run([cellsim, "validate", str(HERE / "cases" / name)]).returncode == 2
+
+
+@pytest.mark.parametrize("args, named", [
+    (["run", "MISSING.json", "-o", "OUT"], "MISSING.json"),
+    (["run", "CASE", "-o", "/nonexistent-dir/out.h5"], "/nonexistent-dir"),
+    (["run", "CASE", "-o", "/etc/hostname/out.h5"], "/etc/hostname"),
+    (["run", "CASE", "-o", "OUT", "--from", "MISSING.h5"], "MISSING.h5"),
+    (["run", "CASE", "-o", "OUT", "--set", "drying.dryness"], "key=value"),
+    (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=abc"], "drying.dryness"),
+    (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=inf"], "finite"),
+    (["run", "CASE", "-o", "OUT", "--set", "cell.n_wal=100"], "cell.n_wall"),
+    (["run", "CASE", "-o"], "-o needs a value"),
+    (["bench", "--steps", "0"], "--steps"),
+    (["frobnicate"], "unknown command"),
+])
+def test_bad_command_line(cellsim, tmp_path, args, named):
+    case = tmp_path / "case.json"
+    case.write_text('{"cell": {"n_wall": 162, "n_fluid": 100}, "drying": {"steps": 0}, "compression": {"steps": 0}}')
+    args = [str(case) if a == "CASE" else str(tmp_path / "out.h5") if a == "OUT" else a for a in args]
+    done = run([cellsim] + args, cwd=tmp_path)
+    assert done.returncode == 2, done.stderr
+    assert named in done.stderr, done.stderr
+    assert not (tmp_path / "out.h5").exists()
+
+
+@pytest.mark.parametrize("name", sorted(CONFIGS))
+def test_bad_workflow_config(root, tmp_path, name):
+    done = run(["snakemake", "--nolock", "-n", "--cores", "2", "--configfile", str(HERE / "configs" / name),
+                "--config", f"output_dir={tmp_path}"], cwd=root)
+    assert done.returncode != 0
+    message = done.stdout + done.stderr
+    assert CONFIGS[name] in message, message[-1500:]
+    assert "Job stats" not in done.stdout
+
+
+def test_missing_workflow_config(root, tmp_path):
+    done = run(["snakemake", "--nolock", "-n", "--cores", "2", "--configfile", str(tmp_path / "nope.yaml")], cwd=root)
+    assert done.returncode != 0 and "nope.yaml" in done.stdout + done.stderr
