@@ -1,22 +1,10 @@
 """The whole pipeline end to end on config/ci.yaml (reduced cells): every case runs, every figure
 file exists and is not empty, the tables and the report are written. Slow: a few minutes on 2 cores."""
-import subprocess
-
 import pandas as pd
 import pytest
 import yaml
 
 pytestmark = pytest.mark.slow
-
-
-@pytest.fixture(scope="module")
-def ci_run(root, tmp_path_factory):
-    out = tmp_path_factory.mktemp("ci-results")
-    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", "--configfile", "config/ci.yaml",
-                           "--config", f"output_dir={out}", "-q"], cwd=root, capture_output=True, text=True,
-                          timeout=1800)
-    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
-    return out
 
 
 def test_every_figure_exists_and_is_not_empty(root, ci_run):
