@@ -7,15 +7,12 @@
 #include <sstream>
 
 #include "errors.hpp"
+#include "h5_eigen.hpp"
 #include "state_io.hpp"
 #include "version.hpp"
 
 namespace cellsim {
 namespace {
-
-std::vector<double> flat(const Eigen::Matrix3Xd& m) { return {m.data(), m.data() + m.size()}; }
-std::vector<double> flat(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-hsize_t cols(const Eigen::Matrix3Xd& m) { return static_cast<hsize_t>(m.cols()); }
 
 void write_text_file(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".partial";
@@ -89,13 +86,13 @@ void ResultFile::write_snapshot(const State& s, const EquationOfState& eos) {
   const auto& w = s.wall;
   Eigen::VectorXd pressure(f.size());
   for (Eigen::Index i = 0; i < f.size(); ++i) pressure[i] = eos.pressure(f.rho[i]);
-  h5::write(g.id(), "wall_positions", flat(w.x), {cols(w.x), 3});
-  h5::write(g.id(), "wall_velocities", flat(w.v), {cols(w.v), 3});
-  h5::write(g.id(), "fluid_positions", flat(f.x), {cols(f.x), 3});
-  h5::write(g.id(), "fluid_velocities", flat(f.v), {cols(f.v), 3});
-  h5::write(g.id(), "fluid_mass", flat(f.m), {static_cast<hsize_t>(f.size())});
-  h5::write(g.id(), "fluid_density", flat(f.rho), {static_cast<hsize_t>(f.size())});
-  h5::write(g.id(), "fluid_pressure", flat(pressure), {static_cast<hsize_t>(f.size())});
+  h5::write_points(g.id(), "wall_positions", w.x);
+  h5::write_points(g.id(), "wall_velocities", w.v);
+  h5::write_points(g.id(), "fluid_positions", f.x);
+  h5::write_points(g.id(), "fluid_velocities", f.v);
+  h5::write_values(g.id(), "fluid_mass", f.m);
+  h5::write_values(g.id(), "fluid_density", f.rho);
+  h5::write_values(g.id(), "fluid_pressure", pressure);
   for (const char* d : {"wall_positions", "fluid_positions"}) h5::set_dataset_attr(g.id(), d, "unit", "m");
   for (const char* d : {"wall_velocities", "fluid_velocities"}) h5::set_dataset_attr(g.id(), d, "unit", "m/s");
   h5::set_dataset_attr(g.id(), "fluid_mass", "unit", "kg");

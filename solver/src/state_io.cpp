@@ -3,24 +3,10 @@
 #include <filesystem>
 
 #include "errors.hpp"
+#include "h5_eigen.hpp"
 
 namespace cellsim {
 namespace {
-
-std::vector<double> flat(const Eigen::Matrix3Xd& m) { return {m.data(), m.data() + m.size()}; }
-std::vector<double> flat(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-
-Eigen::Matrix3Xd read_points(hid_t g, const std::string& name) {
-  std::vector<hsize_t> dims;
-  const auto data = h5::read_doubles(g, name, &dims);
-  if (dims.size() != 2 || dims[1] != 3) throw std::runtime_error(name + " is not an N x 3 array");
-  return Eigen::Map<const Eigen::Matrix3Xd>(data.data(), 3, static_cast<Eigen::Index>(dims[0]));
-}
-
-Eigen::VectorXd read_vector(hid_t g, const std::string& name) {
-  const auto data = h5::read_doubles(g, name);
-  return Eigen::Map<const Eigen::VectorXd>(data.data(), static_cast<Eigen::Index>(data.size()));
-}
 
 // Plate scalars stored as attributes under their member names.
 struct PlateField {
@@ -50,12 +36,12 @@ void write_state(hid_t parent, const State& s) {
   h5::set_attr(g.id(), "plates_active", static_cast<std::int64_t>(s.plates.active));
   h5::set_attr(g.id(), "plate_contacts", static_cast<std::int64_t>(s.plates.contacts));
   for (const auto& field : kPlateFields) h5::set_attr(g.id(), field.name, s.plates.*field.member);
-  h5::write(g.id(), "wall_positions", flat(s.wall.x), {static_cast<hsize_t>(s.wall.size()), 3});
-  h5::write(g.id(), "wall_velocities", flat(s.wall.v), {static_cast<hsize_t>(s.wall.size()), 3});
-  h5::write(g.id(), "fluid_positions", flat(s.fluid.x), {static_cast<hsize_t>(s.fluid.size()), 3});
-  h5::write(g.id(), "fluid_velocities", flat(s.fluid.v), {static_cast<hsize_t>(s.fluid.size()), 3});
-  h5::write(g.id(), "fluid_mass", flat(s.fluid.m), {static_cast<hsize_t>(s.fluid.size())});
-  h5::write(g.id(), "fluid_density", flat(s.fluid.rho), {static_cast<hsize_t>(s.fluid.size())});
+  h5::write_points(g.id(), "wall_positions", s.wall.x);
+  h5::write_points(g.id(), "wall_velocities", s.wall.v);
+  h5::write_points(g.id(), "fluid_positions", s.fluid.x);
+  h5::write_points(g.id(), "fluid_velocities", s.fluid.v);
+  h5::write_values(g.id(), "fluid_mass", s.fluid.m);
+  h5::write_values(g.id(), "fluid_density", s.fluid.rho);
 }
 
 SavedRun read_saved_run(const std::string& path) {
@@ -78,12 +64,12 @@ SavedRun read_saved_run(const std::string& path) {
     s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
     s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));
     for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
-    s.wall.x = read_points(g.id(), "wall_positions");
-    s.wall.v = read_points(g.id(), "wall_velocities");
-    s.fluid.x = read_points(g.id(), "fluid_positions");
-    s.fluid.v = read_points(g.id(), "fluid_velocities");
-    s.fluid.m = read_vector(g.id(), "fluid_mass");
-    s.fluid.rho = read_vector(g.id(), "fluid_density");
+    s.wall.x = h5::read_points(g.id(), "wall_positions");
+    s.wall.v = h5::read_points(g.id(), "wall_velocities");
+    s.fluid.x = h5::read_points(g.id(), "fluid_positions");
+    s.fluid.v = h5::read_points(g.id(), "fluid_velocities");
+    s.fluid.m = h5::read_values(g.id(), "fluid_mass");
+    s.fluid.rho = h5::read_values(g.id(), "fluid_density");
 
     h5::Handle ts = h5::open_group(file.id(), "timeseries");
     for (const auto& q : quantities()) {
