@@ -12,6 +12,12 @@ validate(config, "config/schema/config.schema.yaml")
 
 
 include: "workflow/rules/common.smk"
+
+# On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
+# bookkeeping, figures and the report are quick and run where snakemake runs.
+localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report
+
+
 include: "workflow/rules/solver.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/analysis.smk"

@@ -8,7 +8,7 @@ rule build_solver:
         SOLVER,
     log:
         f"{OUT}/logs/build_solver.log",
-    threads: workflow.cores
+    threads: 2  # scaled down to --cores when fewer
     shell:
         "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
         "cmake --build build -j{threads} --target cellsim) > {log} 2>&1"
