@@ -74,9 +74,12 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
-cellsim::Params load(const Args& a) {
-  if (a.case_path.empty()) throw cellsim::InputError("'" + a.command + "' needs a case file (CASE.json)");
-  nlohmann::json doc = cellsim::read_case_file(a.case_path);
+// The case file with its --set overrides, validated. Without a file, `baseline` allows the paper's
+// baseline (every key at its default) instead of an error.
+cellsim::Params load(const Args& a, bool baseline = false) {
+  if (a.case_path.empty() && !baseline)
+    throw cellsim::InputError("'" + a.command + "' needs a case file (CASE.json)");
+  nlohmann::json doc = a.case_path.empty() ? nlohmann::json::object() : cellsim::read_case_file(a.case_path);
   for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
   return cellsim::validate_case(doc);
 }
@@ -111,14 +114,7 @@ int dispatch(int argc, char** argv) {
     return 0;
   }
   if (a.command == "bench") {
-    // Without a case file: the paper's baseline (every key at its default).
-    cellsim::Params p = a.case_path.empty() ? cellsim::validate_case(nlohmann::json::object()) : load(a);
-    if (a.case_path.empty() && !a.overrides.empty()) {
-      nlohmann::json doc = nlohmann::json::object();
-      for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
-      p = cellsim::validate_case(doc);
-    }
-    cellsim::run_benchmark(p, {a.steps, a.repeats});
+    cellsim::run_benchmark(load(a, /*baseline=*/true), {a.steps, a.repeats});
     return 0;
   }
   if (a.command == "run") {
