@@ -28,6 +28,12 @@ void run_benchmark(Params p, const BenchOptions& options) {
     for (int ph = 0; ph < static_cast<int>(Phase::Count); ++ph)
       phase_ms[ph].push_back(1e3 * sim.timer().seconds(static_cast<Phase>(ph)) / options.steps);
   }
+  {  // pair counts of the last repeat's lists (cut-off + skin), for ns-per-pair estimates
+    Simulation sim(p, cell);
+    std::printf("pair lists: %zu fluid-fluid, %zu fluid-wall; %zu bonds, %zu hinges\n",
+                sim.neighbours().fluid_fluid().index.size(), sim.neighbours().fluid_wall().index.size(),
+                cell.mesh.bonds.size(), cell.mesh.hinges.size());
+  }
   const auto median = [](std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];

@@ -14,8 +14,9 @@ void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, T
     const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
     const Eigen::Vector3d a = x.col(tri[0]);
     out.N.col(t) = (x.col(tri[1]) - a).cross(x.col(tri[2]) - a);
-    out.inv_norm[t] = 1.0 / out.N.col(t).norm();
   }
+  out.norm = out.N.colwise().norm().transpose();  // packed square roots and divisions
+  out.inv_norm = out.norm.cwiseInverse();
 }
 
 Bending::Bending(const WallMesh& mesh, double bending_stiffness_J) : mesh_(mesh) {
@@ -45,29 +46,28 @@ void Bending::add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) con
 }
 
 void Bending::add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, Eigen::Matrix3Xd& force) const {
+  // d(n1.n2) = p1 . dN1 + p2 . dN2, p1 = (n2 - c n1)/|N1|, p2 = (n1 - c n2)/|N2|, and
+  // dE/dc = -(k_b L_n / 2) * 2 / (1 + c)^2, so F = k_b L_n / (1 + c)^2 grad c. The force is linear
+  // in p, so each hinge adds its weighted p to its two triangles, and each triangle (u, v, w) then
+  // turns the sum P into vertex forces once: d(P . N)/du = (v - w) x P, i.e. (next - previous) x P.
+  auto& P = triangle_sum_;
+  P.setZero(3, normals.N.cols());
   for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
     const Hinge& h = mesh_.hinges[n];
     const Eigen::Vector3d n1 = normals.N.col(h.t1) * normals.inv_norm[h.t1];
     const Eigen::Vector3d n2 = normals.N.col(h.t2) * normals.inv_norm[h.t2];
     const double c = n1.dot(n2);
-    // d(n1.n2) = p1 . dN1 + p2 . dN2, p1 = (n2 - c n1)/|N1|, p2 = (n1 - c n2)/|N2|. For a triangle
-    // (u, v, w), d(p . N)/du = (v - w) x p: each vertex's gradient is (next - previous) x p.
-    const Eigen::Vector3d p1 = (n2 - c * n1) * normals.inv_norm[h.t1];
-    const Eigen::Vector3d p2 = (n1 - c * n2) * normals.inv_norm[h.t2];
-    const Eigen::Vector3d xa = x.col(h.a), xb = x.col(h.b);
-    const Eigen::Vector3d grad_c = (xa - xb).cross(p1);         // triangle 1 = (a, b, c)
-    const Eigen::Vector3d grad_b1 = (x.col(h.c) - xa).cross(p1);
-    const Eigen::Vector3d grad_d = (xb - xa).cross(p2);         // triangle 2 = (b, a, d)
-    const Eigen::Vector3d grad_a2 = (x.col(h.d) - xb).cross(p2);
-    // The three gradients of one triangle sum to zero (translation invariance).
-    const Eigen::Vector3d grad_a = -(grad_b1 + grad_c) + grad_a2;
-    const Eigen::Vector3d grad_b = grad_b1 - (grad_a2 + grad_d);
-    // dE/dc = -(k_b L_n / 2) * 2 / (1 + c)^2, so F = -dE/dc grad c = k_b L_n / (1 + c)^2 grad c.
     const double scale = weight_[n] / ((1.0 + c) * (1.0 + c));
-    force.col(h.a) += scale * grad_a;
-    force.col(h.b) += scale * grad_b;
-    force.col(h.c) += scale * grad_c;
-    force.col(h.d) += scale * grad_d;
+    P.col(h.t1) += (scale * normals.inv_norm[h.t1]) * (n2 - c * n1);
+    P.col(h.t2) += (scale * normals.inv_norm[h.t2]) * (n1 - c * n2);
+  }
+  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& tri = mesh_.triangles[t];
+    const Eigen::Vector3d p = P.col(static_cast<Eigen::Index>(t));
+    const Eigen::Vector3d u = x.col(tri[0]), v = x.col(tri[1]), w = x.col(tri[2]);
+    force.col(tri[0]) += (v - w).cross(p);
+    force.col(tri[1]) += (w - u).cross(p);
+    force.col(tri[2]) += (u - v).cross(p);
   }
 }
 

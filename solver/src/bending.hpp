@@ -10,11 +10,11 @@
 
 namespace cellsim {
 
-// Per-triangle area normals N = (v - u) x (w - u) and 1/|N|, shared by the geometry measures and
-// bending so they are computed once a step.
+// Per-triangle area normals N = (v - u) x (w - u), |N| (twice the area) and 1/|N|, shared by the
+// geometry measures and bending so they are computed once a step.
 struct TriangleNormals {
   Eigen::Matrix3Xd N;
-  Eigen::VectorXd inv_norm;
+  Eigen::VectorXd norm, inv_norm;
 };
 void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out);
 
@@ -30,6 +30,7 @@ class Bending {
  private:
   const WallMesh& mesh_;
   std::vector<double> weight_;  // k_b L_n per hinge
+  mutable Eigen::Matrix3Xd triangle_sum_;  // scratch of add_forces: weighted p summed per triangle
 };
 
 }  // namespace cellsim

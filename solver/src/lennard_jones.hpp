@@ -8,13 +8,15 @@ namespace cellsim {
 struct LennardJones {
   double r0_m, cutoff_m, repulsion_f0_N_m, attraction_f0_N_m;
 
-  // f(r) from r^2; powers of (r0/r)^2 avoid pow and sqrt.
+  // f(r) from r^2; powers of (r0/r)^2 avoid pow and sqrt. Branch-free (both strengths and the
+  // cut-off are selects) so that a loop over pairs vectorises.
   double f_of_r2(double r2) const {
-    if (r2 >= cutoff_m * cutoff_m) return 0.0;
-    const double q = r0_m * r0_m / r2;  // (r0/r)^2
+    const double inv_r2 = 1.0 / r2;
+    const double q = r0_m * r0_m * inv_r2;  // (r0/r)^2
     const double q2 = q * q;
     const double f0 = q > 1.0 ? repulsion_f0_N_m : attraction_f0_N_m;
-    return f0 * (q2 * q2 - q2) / r2;
+    const double f = f0 * (q2 * q2 - q2) * inv_r2;
+    return r2 < cutoff_m * cutoff_m ? f : 0.0;
   }
 };
 

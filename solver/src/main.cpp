@@ -91,7 +91,8 @@ int dispatch(int argc, char** argv) {
     return 0;
   }
   if (a.command == "--version") {
-    std::cout << "cellsim " << cellsim::kVersion << " (git " << cellsim::kGitRevision << ")\n";
+    std::cout << "cellsim " << cellsim::kVersion << " (git " << cellsim::kGitRevision << ", " << cellsim::kInstructionSet
+              << ")\n";
     return 0;
   }
   if (a.command == "params") {

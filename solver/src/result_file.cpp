@@ -50,6 +50,7 @@ void ResultFile::write_header(const nlohmann::json& resolved_case) {
   h5::set_attr(root, "solver", std::string("cellsim"));
   h5::set_attr(root, "solver_version", std::string(kVersion));
   h5::set_attr(root, "git_revision", std::string(kGitRevision));
+  h5::set_attr(root, "instruction_set", std::string(kInstructionSet));
   h5::set_attr(root, "units", std::string("SI throughout; each dataset carries a 'unit' attribute"));
   snapshots_ = h5::create_group(root, "snapshots");
 }

@@ -103,16 +103,14 @@ void Simulation::update_geometry() {
   const auto& x = s_.wall.x;
   compute_triangle_normals(x, mesh_, triangle_normals_);
   vertex_normal_.setZero(3, x.cols());
-  double twice_area = 0, six_volume = 0;
+  double six_volume = 0;
   for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
     const auto& tri = mesh_.triangles[t];
-    const Eigen::Index ti = static_cast<Eigen::Index>(t);
-    const Eigen::Vector3d n = triangle_normals_.N.col(ti);
-    twice_area += 1.0 / triangle_normals_.inv_norm[ti];
+    const Eigen::Vector3d n = triangle_normals_.N.col(static_cast<Eigen::Index>(t));
     six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
     for (int v : tri) vertex_normal_.col(v) += n;
   }
-  wall_area_m2_ = 0.5 * twice_area;
+  wall_area_m2_ = 0.5 * triangle_normals_.norm.sum();
   volume_m3_ = six_volume / 6.0;
   const double diameter = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
   s_.smoothing_length_m = diameter / initial_diameter_m_ * *p_.h0_m;
@@ -142,7 +140,7 @@ void Simulation::mass_transfer() {
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
   const double ramp = s_.stage == Stage::Drying ? wall::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
-  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_);
+  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_, bond_scratch_);
   s_.wall_tension_N_m = tension_length / (2.0 * wall_area_m2_);
   timer_.lap(Phase::WallBonds);
   bending_.add_forces(s_.wall.x, triangle_normals_, wall_force_);
@@ -152,11 +150,13 @@ void Simulation::wall_terms() {
 // Lennard-Jones coupling; also the outward push on the wall that the pressure closure and the
 // Young-Laplace check compare with the fluid pressure.
 void Simulation::wall_fluid_terms() {
-  wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, lj_on_wall_);
+  wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, lj_on_wall_,
+                    lj_pair_f_);
   wall_force_ += lj_on_wall_;
-  double outward = 0;
-  for (Eigen::Index k = 0; k < lj_on_wall_.cols(); ++k)
-    outward += lj_on_wall_.col(k).dot(vertex_normal_.col(k).normalized());
+  // Each wall particle's LJ push along its unit normal (packed norms and divisions).
+  const double outward = (lj_on_wall_.cwiseProduct(vertex_normal_).colwise().sum().array() /
+                          vertex_normal_.colwise().norm().array())
+                             .sum();
   s_.wall_pressure_Pa = outward / wall_area_m2_;
 }
 
@@ -170,7 +170,8 @@ void Simulation::plate_terms() {
 
 void Simulation::kick(double half_dt) {
   auto& f = s_.fluid;
-  for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += half_dt / f.m[i] * fluid_.force.col(i);
+  kick_factor_ = half_dt / f.m.array();  // one packed division for all particles
+  for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += kick_factor_[i] * fluid_.force.col(i);
   f.rho += half_dt * fluid_.drho_dt;
   f.m += half_dt * dm_dt_;
   s_.wall.v += (half_dt / s_.wall.mass_kg) * wall_force_;
@@ -224,37 +225,40 @@ void Simulation::check_state() const {
     }
 }
 
-// model.md §7: dt must stay under the CFL limits and the wall-spring limit.
+// model.md §7: dt must stay under the CFL limits and the wall-spring limit. Squared speeds and
+// accelerations are compared (one square root each), and a message is composed only on failure.
 void Simulation::check_time_step() const {
   const double h = s_.smoothing_length_m;
   const double c0 = eos().sound_speed_m_s();
   Eigen::Index i_v = 0, i_a = 0;
-  const double v_max = s_.fluid.size() ? s_.fluid.v.colwise().norm().maxCoeff(&i_v) : 0.0;
-  double a_max = 0;
+  double v2_max = 0, a2_max = 0;
   for (Eigen::Index i = 0; i < s_.fluid.size(); ++i) {
-    const double a = fluid_.force.col(i).norm() / s_.fluid.m[i];
-    if (a > a_max) a_max = a, i_a = i;
+    const double v2 = s_.fluid.v.col(i).squaredNorm();
+    const double a2 = fluid_.force.col(i).squaredNorm() / (s_.fluid.m[i] * s_.fluid.m[i]);
+    if (v2 > v2_max) v2_max = v2, i_v = i;
+    if (a2 > a2_max) a2_max = a2, i_a = i;
   }
-  const struct {
-    double limit;
-    std::string what;
-  } limits[] = {
-      {0.25 * h / (c0 + v_max), "the sound-speed CFL limit 0.25 h / (c0 + |v|max), |v|max = " +
-                                    std::to_string(v_max) + " m/s at fluid particle " + std::to_string(i_v)},
-      {p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY,
-       "the viscous limit 0.125 h^2 rho0 / mu"},
-      {a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY,
-       "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
-           " m/s^2 at fluid particle " + std::to_string(i_a)},
-      {wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle"},
+  const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
+  const double sound_limit = 0.25 * h / (c0 + v_max);
+  const double viscous_limit =
+      p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY;
+  const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
+  const double dt = p_.dt_s;
+  if (dt <= sound_limit && dt <= viscous_limit && dt <= acceleration_limit && dt <= wall_spring_dt_limit_s_) return;
+  const auto fail = [&](double limit, const std::string& what) {
+    std::ostringstream msg;
+    msg << where() << ": time step " << dt * 1e9 << " ns exceeds " << what << " (" << limit * 1e9
+        << " ns); reduce time.dt_ns";
+    throw NumericalFailure(msg.str());
   };
-  for (const auto& l : limits)
-    if (p_.dt_s > l.limit) {
-      std::ostringstream msg;
-      msg << where() << ": time step " << p_.dt_s * 1e9 << " ns exceeds " << l.what << " (" << l.limit * 1e9
-          << " ns); reduce time.dt_ns";
-      throw NumericalFailure(msg.str());
-    }
+  if (dt > sound_limit)
+    fail(sound_limit, "the sound-speed CFL limit 0.25 h / (c0 + |v|max), |v|max = " + std::to_string(v_max) +
+                          " m/s at fluid particle " + std::to_string(i_v));
+  if (dt > viscous_limit) fail(viscous_limit, "the viscous limit 0.125 h^2 rho0 / mu");
+  if (dt > acceleration_limit)
+    fail(acceleration_limit, "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
+                                 " m/s^2 at fluid particle " + std::to_string(i_a));
+  fail(wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle");
 }
 
 void Simulation::check_containment() const {

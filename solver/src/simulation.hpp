@@ -37,6 +37,7 @@ class Simulation {
   EquationOfState eos() const;
   Record record() const { return measure(s_, mesh_, p_, eos()); }
   const PhaseTimer& timer() const { return timer_; }
+  const NeighbourLists& neighbours() const { return neighbours_; }
   PhaseTimer& timer() { return timer_; }
 
   // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
@@ -71,6 +72,7 @@ class Simulation {
   FluidRates fluid_;
   Eigen::Matrix3Xd wall_force_, lj_on_wall_;
   Eigen::VectorXd dm_dt_;
+  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_;  // scratch, kept to avoid reallocation
   TriangleNormals triangle_normals_;
   Eigen::Matrix3Xd vertex_normal_;  // area-weighted outward normals of the wall
   double wall_area_m2_ = 0, volume_m3_ = 0;

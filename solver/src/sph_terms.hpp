@@ -1,22 +1,31 @@
 #pragma once
 // Per-pair SPH terms of Table 1, for fluid particles i and j at distance r, x_ij = x_i - x_j.
 // F_ij is the force on i; j gets -F_ij (each term is antisymmetric: Newton's third law).
+// Both forces are a scalar times grad_i W_ij = g x_ij (g = (1/r) dW/dr), or times g v_ij, so the
+// pair loop computes the two scalar coefficients and adds coefficient x vector once.
 #include <Eigen/Core>
 
 namespace cellsim::sph {
 
-// Pressure force, Eq 3 (symmetric form): F_ij = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij,
-// grad_i W_ij = dW_dr_over_r * x_ij.
-inline Eigen::Vector3d pressure_force(double mi, double mj, double Pi_over_rho2, double Pj_over_rho2,
-                                      double dW_dr_over_r, const Eigen::Vector3d& xij) {
-  return -mi * mj * (Pi_over_rho2 + Pj_over_rho2) * dW_dr_over_r * xij;
+// Pressure force, Eq 3 (symmetric form): F_ij = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij;
+// this returns the factor of g x_ij.
+inline double pressure_coefficient(double mi, double mj, double Pi_over_rho2, double Pj_over_rho2) {
+  return -mi * mj * (Pi_over_rho2 + Pj_over_rho2);
 }
 
 // Viscous force, Eq 4 in Morris' dissipative form (model.md §2: the printed minus adds energy):
-// F_ij = m_i m_j (mu_i + mu_j)/(rho_i rho_j) (1/r dW/dr) v_ij.
-inline Eigen::Vector3d viscous_force(double mi, double mj, double mu_sum, double rhoi, double rhoj,
-                                     double dW_dr_over_r, const Eigen::Vector3d& vij) {
-  return mi * mj * mu_sum / (rhoi * rhoj) * dW_dr_over_r * vij;
+// F_ij = m_i m_j (mu_i + mu_j)/(rho_i rho_j) (1/r dW/dr) v_ij, written with the particle volumes
+// V = m/rho (computed once per particle, not per pair); this returns the factor of g v_ij.
+inline double viscous_coefficient(double mu_sum, double Vi, double Vj) { return mu_sum * Vi * Vj; }
+
+inline Eigen::Vector3d pressure_force(double mi, double mj, double Pi_over_rho2, double Pj_over_rho2,
+                                      double dW_dr_over_r, const Eigen::Vector3d& xij) {
+  return pressure_coefficient(mi, mj, Pi_over_rho2, Pj_over_rho2) * dW_dr_over_r * xij;
+}
+
+inline Eigen::Vector3d viscous_force(double mu_sum, double Vi, double Vj, double dW_dr_over_r,
+                                     const Eigen::Vector3d& vij) {
+  return viscous_coefficient(mu_sum, Vi, Vj) * dW_dr_over_r * vij;
 }
 
 // Continuity, Eq 10: the contribution of j to d(rho_i)/dt is m_j v_ij . grad_i W_ij

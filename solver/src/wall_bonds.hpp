@@ -18,7 +18,8 @@ struct BondLaw {
 
 // Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5).
 // Returns sum over bonds of tension x length (for the wall's mean tension, Young-Laplace).
+// tension_over_length is scratch (kept by the caller to avoid reallocation), one value per bond.
 double add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                       Eigen::Matrix3Xd& force);
+                       Eigen::Matrix3Xd& force, Eigen::VectorXd& tension_over_length);
 
 }  // namespace cellsim

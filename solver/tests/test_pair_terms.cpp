@@ -17,8 +17,8 @@ TEST(PairTerms, PressureAndViscousForcesAreEqualAndOpposite) {
   const Eigen::Vector3d p_ji = sph::pressure_force(mj, mi, Pj / (rhoj * rhoj), Pi / (rhoi * rhoi), g, -xij);
   EXPECT_TRUE((p_ij + p_ji).isZero(1e-12 * p_ij.norm()));
   EXPECT_GT(p_ij.dot(xij), 0.0);  // positive pressure pushes the pair apart
-  const Eigen::Vector3d v_ij = sph::viscous_force(mi, mj, 0.2, rhoi, rhoj, g, vij);
-  const Eigen::Vector3d v_ji = sph::viscous_force(mj, mi, 0.2, rhoj, rhoi, g, -vij);
+  const Eigen::Vector3d v_ij = sph::viscous_force(0.2, mi / rhoi, mj / rhoj, g, vij);
+  const Eigen::Vector3d v_ji = sph::viscous_force(0.2, mj / rhoj, mi / rhoi, g, -vij);
   EXPECT_TRUE((v_ij + v_ji).isZero(1e-12 * v_ij.norm()));
   EXPECT_LT(v_ij.dot(vij), 0.0);  // viscosity opposes the relative velocity
 }
