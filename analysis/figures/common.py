@@ -43,7 +43,7 @@ def ordered(values, order=None):
 
 def grid(n_rows, n_cols, panel_w=3.2, panel_h=3.0, **kw):
     fig, axes = plt.subplots(n_rows, n_cols, figsize=(panel_w * n_cols + 0.6, panel_h * n_rows + 0.8),
-                             squeeze=False, **kw)
+                             squeeze=False, layout="constrained", **kw)
     return fig, axes
 
 

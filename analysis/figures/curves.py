@@ -43,7 +43,8 @@ def draw(config, fig, series, root="."):
         ax.grid(alpha=0.3)
         if stage == "all" and x == "time_s":
             _mark_compression_start(ax, data)
-    axes[0][-1].legend(fontsize=7, loc="best")
+    # Outside the last panel, so that it never covers a curve (savefig's tight box includes it).
+    axes[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     figure.suptitle(spec["title"], fontsize=11)
     return figure
 
