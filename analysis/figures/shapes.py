@@ -39,9 +39,11 @@ def draw_slice(ax, snap, plate_length_m, scale=1e6):
     for z in (snap["plate_top_z_m"], snap["plate_bottom_z_m"]):
         if np.isfinite(z):
             ax.plot([-half, half], [(z - centre[2]) * scale] * 2, color="black", lw=2.5)
+    # Square limits that hold the plates and the whole wall (a 200 um cell is wider than the plates).
+    reach = max(half, np.abs(wall[:, [0, 2]] - centre[[0, 2]]).max() * scale) * 1.1
     ax.set_aspect("equal")
-    ax.set_xlim(-half * 1.1, half * 1.1)
-    ax.set_ylim(-half * 1.1, half * 1.1)
+    ax.set_xlim(-reach, reach)
+    ax.set_ylim(-reach, reach)
     ax.tick_params(labelsize=7)
 
 
@@ -75,9 +77,9 @@ def draw(config, fig, runs, cases):
             plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
             draw_slice(ax, snap, plate_length)
             label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
-            label.append(moment_label(moment))
-            ax.set_title(f"{panel_letter(i * len(cols) + j)} " + ", ".join(label) + f"\nt = {snap['time_s'] * 1e6:.1f} us",
-                         fontsize=7)
+            # Two short lines: long one-line titles ran into the neighbouring panels' titles.
+            ax.set_title(f"{panel_letter(i * len(cols) + j)} " + ", ".join(label) +
+                         f"\n{moment_label(moment)}, t = {snap['time_s'] * 1e6:.1f} us", fontsize=7)
             if j == 0:
                 ax.set_ylabel("z [um]", fontsize=8)
             if i == len(rows) - 1:
