@@ -244,7 +244,6 @@ void Simulation::check_time_step() const {
       p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY;
   const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
   const double dt = p_.dt_s;
-  if (dt <= sound_limit && dt <= viscous_limit && dt <= acceleration_limit && dt <= wall_spring_dt_limit_s_) return;
   const auto fail = [&](double limit, const std::string& what) {
     std::ostringstream msg;
     msg << where() << ": time step " << dt * 1e9 << " ns exceeds " << what << " (" << limit * 1e9
@@ -258,7 +257,8 @@ void Simulation::check_time_step() const {
   if (dt > acceleration_limit)
     fail(acceleration_limit, "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
                                  " m/s^2 at fluid particle " + std::to_string(i_a));
-  fail(wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle");
+  if (dt > wall_spring_dt_limit_s_)
+    fail(wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle");
 }
 
 void Simulation::check_containment() const {
