@@ -115,7 +115,7 @@ std::vector<ParamSpec> build_specs() {
               "none: run all compression.steps"),
       // time
       real("time.dt_ns", "ns", 1e-9, &P::dt_s, 1, 0, false, 1000, true,
-           "time step (checked against the CFL and wall-spring limits every step)", "model §7"),
+           "time step (checked against the wall-spring limit at the start, the CFL limits every step)", "model §7"),
       // output
       integer("output.record_every", &P::record_every, 100, 1, 1e9,
               "steps between time-series records", "model §8"),

@@ -225,8 +225,9 @@ void Simulation::check_state() const {
     }
 }
 
-// model.md §7: dt must stay under the CFL limits and the wall-spring limit. Squared speeds and
-// accelerations are compared (one square root each), and a message is composed only on failure.
+// model.md §7: dt must stay under the CFL limits (the constant wall-spring limit is checked once,
+// in the constructor). Squared speeds and accelerations are compared (one square root each), and a
+// message is composed only on failure.
 void Simulation::check_time_step() const {
   const double h = s_.smoothing_length_m;
   const double c0 = eos().sound_speed_m_s();
@@ -257,8 +258,6 @@ void Simulation::check_time_step() const {
   if (dt > acceleration_limit)
     fail(acceleration_limit, "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
                                  " m/s^2 at fluid particle " + std::to_string(i_a));
-  if (dt > wall_spring_dt_limit_s_)
-    fail(wall_spring_dt_limit_s_, "the wall-spring limit 2 / omega_max of the stiffest wall particle");
 }
 
 void Simulation::check_containment() const {
