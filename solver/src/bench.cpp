@@ -28,8 +28,8 @@ void run_benchmark(Params p, const BenchOptions& options) {
     ms_per_step.push_back(1e3 * seconds / options.steps);
     for (int ph = 0; ph < static_cast<int>(Phase::Count); ++ph)
       phase_ms[ph].push_back(1e3 * sim.timer().seconds(static_cast<Phase>(ph)) / options.steps);
-    fluid_pairs = sim.neighbours().fluid_fluid().index.size();  // for ns-per-pair estimates
-    wall_pairs = sim.neighbours().fluid_wall().index.size();
+    fluid_pairs = sim.neighbours().fluid_fluid().pairs;  // for ns-per-pair estimates
+    wall_pairs = sim.neighbours().fluid_wall().pairs;
   }
   std::printf("pair lists (cut-off + skin) at the end: %zu fluid-fluid, %zu fluid-wall; %zu bonds, %zu hinges\n",
               fluid_pairs, wall_pairs, cell.mesh.bonds.size(), cell.mesh.hinges.size());

@@ -1,9 +1,10 @@
 #pragma once
 // Cubic B-spline kernel, Eq 5 with the paper's typos fixed (model.md §2): support 2h,
 // W = 3/(2 pi h^3) {2/3 - s^2 + s^3/2 (s<1); (2-s)^3/6 (1<=s<2); 0}, s = r/h.
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
+
+#include "simd4.hpp"
 
 namespace cellsim {
 
@@ -35,21 +36,17 @@ class CubicSplineKernel {
     return 0.0;
   }
 
-  // (1/r) dW/dr, finite at r -> 0, as the pair forces need it. Written without branches (both
-  // pieces are evaluated, clamped so neither can trap, and one is selected) so that a loop over
-  // many pairs vectorises; for s >= 1, max(r, h) = r and max(2 - s, 0) = 2 - s up to s = 2.
-  double dW_dr_over_r(double r) const {
-    const double s = r * inv_h_;
-    const double inner = norm_ * inv_h_ * inv_h_ * (-2.0 + 1.5 * s);
-    const double t = std::max(2.0 - s, 0.0);
-    const double outer = -norm_ * inv_h_ * 0.5 * t * t / std::max(r, h_);
-    return s < 1.0 ? inner : outer;
-  }
-
-  // g[q] = (1/r) dW/dr at r = sqrt(r2[q]) for q < n: the pair loop's square roots and divisions in
-  // one stream, which the compiler turns into packed (SIMD) instructions.
-  void dW_dr_over_r_from_r2(const double* r2, double* g, std::size_t n) const {
-    for (std::size_t q = 0; q < n; ++q) g[q] = dW_dr_over_r(std::sqrt(r2[q]));
+  // (1/r) dW/dr, finite at r -> 0, as the pair forces need it: for one distance (double) or four
+  // at once (simd::double4, the lanes of the pair loop). Written without branches: both pieces
+  // are evaluated, clamped so neither can trap, and one is selected; for s >= 1, max(r, h) = r,
+  // and max(2 - s, 0) is 2 - s up to s = 2 and 0 beyond the support.
+  template <class T>
+  T dW_dr_over_r(T r) const {
+    const T s = r * inv_h_;
+    const T inner = norm_ * inv_h_ * inv_h_ * (-2.0 + 1.5 * s);
+    const T t = simd::max(2.0 - s, 0.0);
+    const T outer = -norm_ * inv_h_ * 0.5 * t * t / simd::max(r, h_);
+    return simd::select(s < 1.0, inner, outer);
   }
 
  private:

@@ -110,8 +110,10 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   const int n = static_cast<int>(fluid_x.cols());
   fluid_fluid_.offset.assign(1, 0);
   fluid_fluid_.index.clear();
+  fluid_fluid_.pairs = 0;
   fluid_wall_.offset.assign(1, 0);
   fluid_wall_.index.clear();
+  fluid_wall_.pairs = 0;
   std::vector<int> row;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d xi = fluid_x.col(i);
@@ -120,6 +122,8 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
       if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2) row.push_back(j);
     });
     std::sort(row.begin(), row.end());  // ascending j: memory order, and independent of binning
+    fluid_fluid_.pairs += row.size();
+    while (row.size() % kPairLanes) row.push_back(n);
     fluid_fluid_.index.insert(fluid_fluid_.index.end(), row.begin(), row.end());
     fluid_fluid_.offset.push_back(static_cast<int>(fluid_fluid_.index.size()));
 
@@ -128,6 +132,7 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
       if ((wall_x.col(k) - xi).squaredNorm() < fw2) row.push_back(k);
     });
     std::sort(row.begin(), row.end());
+    fluid_wall_.pairs += row.size();
     fluid_wall_.index.insert(fluid_wall_.index.end(), row.begin(), row.end());
     fluid_wall_.offset.push_back(static_cast<int>(fluid_wall_.index.size()));
   }

@@ -1,18 +1,24 @@
 #pragma once
 // Verlet neighbour lists with a skin, built from a cell list and reused until some particle has
 // moved far enough (or h has grown enough) that a pair could have entered the cut-off unseen.
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace cellsim {
 
-// Compressed rows: the neighbours of i are index[offset[i] .. offset[i+1]).
+// Compressed rows: the neighbours of i are index[offset[i] .. offset[i+1]), ascending.
 struct PairList {
   std::vector<int> offset;
   std::vector<int> index;
+  std::size_t pairs = 0;  // listed pairs, not counting padding
   int rows() const { return static_cast<int>(offset.size()) - 1; }
 };
+
+// The fluid-fluid rows are padded to a multiple of this with the index n (one past the last
+// fluid particle), so that the pair loop can take them four pairs at a time.
+constexpr int kPairLanes = 4;
 
 class NeighbourLists {
  public:
@@ -24,7 +30,7 @@ class NeighbourLists {
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
 
-  const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list: j > i only
+  const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list (j > i), rows padded
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
   long builds() const { return builds_; }
 
