@@ -204,6 +204,14 @@ std::string Simulation::where() const {
   return s.str();
 }
 
+// The checks run on every step, so the common case is one packed pass per array; the particle at
+// fault is looked up only on failure. a - a is 0 for a finite entry and NaN otherwise, so the sum of
+// a - a is exactly 0 iff every entry is finite (and cannot overflow, unlike the sum of a).
+template <class Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& a) {
+  return (a.derived().array() - a.derived().array()).sum() == 0.0;
+}
+
 void Simulation::check_state() const {
   const auto report = [&](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) {
     for (Eigen::Index i = 0; i < m.cols(); ++i)
@@ -211,16 +219,17 @@ void Simulation::check_state() const {
         throw NumericalFailure(where() + ": " + kind + " particle " + std::to_string(i) + " has a non-finite " +
                                quantity);
   };
-  if (!s_.fluid.x.allFinite()) report("fluid", s_.fluid.x, "position");
-  if (!s_.fluid.v.allFinite()) report("fluid", s_.fluid.v, "velocity");
-  if (!s_.wall.x.allFinite()) report("wall", s_.wall.x, "position");
-  if (!s_.wall.v.allFinite()) report("wall", s_.wall.v, "velocity");
-  for (Eigen::Index i = 0; i < s_.fluid.size(); ++i)
-    if (!std::isfinite(s_.fluid.rho[i]) || !(s_.fluid.rho[i] > 0) || !std::isfinite(s_.fluid.m[i]) ||
-        !(s_.fluid.m[i] > 0)) {
+  if (!all_finite(s_.fluid.x)) report("fluid", s_.fluid.x, "position");
+  if (!all_finite(s_.fluid.v)) report("fluid", s_.fluid.v, "velocity");
+  if (!all_finite(s_.wall.x)) report("wall", s_.wall.x, "position");
+  if (!all_finite(s_.wall.v)) report("wall", s_.wall.v, "velocity");
+  const auto& f = s_.fluid;
+  if (all_finite(f.rho) && all_finite(f.m) && f.rho.minCoeff() > 0 && f.m.minCoeff() > 0) return;
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    if (!std::isfinite(f.rho[i]) || !(f.rho[i] > 0) || !std::isfinite(f.m[i]) || !(f.m[i] > 0)) {
       std::ostringstream msg;
-      msg << where() << ": fluid particle " << i << " has density " << s_.fluid.rho[i] << " kg/m^3 and mass "
-          << s_.fluid.m[i] << " kg (both must be positive and finite)";
+      msg << where() << ": fluid particle " << i << " has density " << f.rho[i] << " kg/m^3 and mass " << f.m[i]
+          << " kg (both must be positive and finite)";
       throw NumericalFailure(msg.str());
     }
 }

@@ -1,0 +1,77 @@
+// A run that blows up stops with a message saying where and why (model.md §7, the state checks of
+// every step), and leaves only a file marked partial, never one that looks complete.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "case_file.hpp"
+#include "cell.hpp"
+#include "cli_helpers.hpp"
+#include "errors.hpp"
+#include "simulation.hpp"
+
+using namespace cellsim;
+
+namespace {
+
+Simulation small_simulation() {
+  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}}, {"time", {{"dt_ns", 0.5}}}};
+  Params p = validate_case(doc);
+  return Simulation(p, build_cell(p));
+}
+
+// The message of the NumericalFailure the next step throws ("" if none).
+std::string failure_of_next_step(Simulation& sim) {
+  try {
+    sim.step();
+  } catch (const NumericalFailure& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(NumericalFailure, ANonFiniteVelocityNamesTheParticleAndStep) {
+  Simulation sim = small_simulation();
+  sim.step();
+  sim.mutable_state().fluid.v.col(7) << 0.0, std::nan(""), 0.0;
+  const std::string message = failure_of_next_step(sim);
+  EXPECT_NE(message.find("step 2 "), std::string::npos) << message;  // the step that made it
+  EXPECT_NE(message.find("fluid particle 7 has a non-finite"), std::string::npos) << message;
+}
+
+TEST(NumericalFailure, AnInfiniteWallPositionIsCaught) {
+  Simulation sim = small_simulation();
+  sim.mutable_state().wall.x(2, 11) = INFINITY;
+  const std::string message = failure_of_next_step(sim);
+  EXPECT_NE(message.find("non-finite"), std::string::npos) << message;
+}
+
+TEST(NumericalFailure, ANegativeDensityNamesTheParticle) {
+  Simulation sim = small_simulation();
+  sim.mutable_state().fluid.rho[5] = -1.0;
+  const std::string message = failure_of_next_step(sim);
+  EXPECT_NE(message.find("fluid particle 5 has density"), std::string::npos) << message;
+}
+
+TEST(NumericalFailure, AHealthyStateRunsOn) {
+  Simulation sim = small_simulation();
+  for (int n = 0; n < 20; ++n) EXPECT_EQ(failure_of_next_step(sim), "");
+}
+
+TEST(NumericalFailure, TheCliExitsWithCodeThreeAndLeavesOnlyAPartialFile) {
+  cellsim::testing::ScratchDir dir("blowup");
+  // 50 times the paper's turgor pushes the fluid through the wall within a microsecond.
+  const auto r = cellsim::testing::run_cli("run " + std::string(CELLSIM_SOURCE_DIR) +
+                                      "/solver/examples/apple-baseline.json -o " + dir.file("out.h5") +
+                                      " --quiet --set cell.turgor_kPa=5000 --set drying.steps=2000"
+                                      " --set compression.steps=0",
+                                  dir);
+  EXPECT_EQ(r.exit_code, kExitNumericalFailure) << r.err;
+  EXPECT_NE(r.err.find("numerical failure: step "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("outside the cell wall"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("out.h5.partial")));
+}
