@@ -13,14 +13,16 @@ namespace cellsim {
 void run_benchmark(Params p, const BenchOptions& options) {
   const Cell cell = build_cell(p);
   const long n_particles = cell.fluid_x.cols() + cell.wall_x.cols();
-  std::printf("cellsim bench: %ld fluid + %ld wall particles, %ld steps x %d repeats (drying from the start)\n",
-              static_cast<long>(cell.fluid_x.cols()), static_cast<long>(cell.wall_x.cols()), options.steps,
-              options.repeats);
+  std::printf(
+      "cellsim bench: %ld fluid + %ld wall particles, %ld steps x %d repeats (drying from the start), %d thread%s\n",
+      static_cast<long>(cell.fluid_x.cols()), static_cast<long>(cell.wall_x.cols()), options.steps, options.repeats,
+      options.threads, options.threads == 1 ? "" : "s");
   std::vector<double> ms_per_step;
   std::vector<std::vector<double>> phase_ms(static_cast<int>(Phase::Count));
   std::size_t fluid_pairs = 0, wall_pairs = 0;
   for (int r = 0; r < options.repeats; ++r) {
     Simulation sim(p, cell);
+    sim.set_threads(options.threads);
     sim.timer().reset();
     const auto start = std::chrono::steady_clock::now();
     for (long n = 0; n < options.steps; ++n) sim.step();

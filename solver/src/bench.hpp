@@ -7,6 +7,7 @@ namespace cellsim {
 struct BenchOptions {
   long steps = 2000;
   int repeats = 5;
+  int threads = 1;
 };
 
 void run_benchmark(Params p, const BenchOptions& options);

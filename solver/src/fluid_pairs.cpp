@@ -1,10 +1,12 @@
 #include "fluid_pairs.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
 #include "simd4.hpp"
 #include "sph_terms.hpp"
+#include "threads.hpp"
 
 namespace cellsim {
 namespace {
@@ -15,24 +17,23 @@ using simd::double4;
 // rest, without mass, so that its lanes add exact zeros.
 constexpr double kFarAway_m = 1e30;
 
-// One record of 16 doubles per particle (columns 0..n-1, and column n for the padding index),
-// four fields of four: position (x, 0), velocity (v, 0), factors (m, P/rho^2, m/rho, 0) and the
-// sums the pairs add up (force, drho/dt). One record per particle keeps each particle's data in
-// two adjacent cache lines and never puts a field that is read at the address offset of one written.
-enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kSums = 12, kRecord = 16 };
+// One record of 12 doubles per particle (columns 0..n-1, and column n for the padding index),
+// three fields of four: position (x, 0), velocity (v, 0), factors (m, P/rho^2, m/rho, 0). The
+// sums the pairs add up, (force, drho/dt), are records of four in a separate array per thread.
+enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kRecord = 12, kSum = 4 };
 
-void fill_records(const FluidParticles& f, const EquationOfState& eos, FluidRates& out) {
-  const Eigen::Index n = f.size();
-  out.pressure.resize(n);
-  out.records.setZero(kRecord, n + 1);
-  for (Eigen::Index i = 0; i < n; ++i) {
+// The records of particles [begin, end); the padding record is written by whoever ends at n.
+void fill_records(const FluidParticles& f, const EquationOfState& eos, Eigen::Index begin, Eigen::Index end,
+                  FluidRates& out) {
+  for (Eigen::Index i = begin; i < end; ++i) {
     out.pressure[i] = eos.pressure(f.rho[i]);
-    auto r = out.records.col(i);
-    r.segment<3>(kPosition) = f.x.col(i);
-    r.segment<3>(kVelocity) = f.v.col(i);
-    r.segment<3>(kFactors) << f.m[i], out.pressure[i] / (f.rho[i] * f.rho[i]), f.m[i] / f.rho[i];
+    const double P_over_rho2 = out.pressure[i] / (f.rho[i] * f.rho[i]), volume = f.m[i] / f.rho[i];
+    out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, 0.0;
   }
-  out.records.col(n).segment<3>(kPosition).setConstant(kFarAway_m);
+  if (end == f.size()) {
+    out.records.col(end).setZero();
+    out.records.col(end).segment<3>(kPosition).setConstant(kFarAway_m);
+  }
 }
 
 // Four records, transposed: lane l of field k is row l's entry k.
@@ -43,24 +44,30 @@ struct Lanes {
   }
 };
 
-}  // namespace
+// Rows first_row[t] .. first_row[t + 1] - 1 go to thread t: contiguous blocks of about equal
+// numbers of listed pairs, fixed by the list and the thread count (so results are reproducible).
+std::vector<int> split_rows(const PairList& pairs, int threads) {
+  std::vector<int> first_row(static_cast<std::size_t>(threads) + 1, pairs.rows());
+  first_row[0] = 0;
+  const long total = pairs.offset.back();
+  for (int t = 1; t < threads; ++t)
+    first_row[t] = static_cast<int>(
+        std::lower_bound(pairs.offset.begin(), pairs.offset.end() - 1, total * t / threads) - pairs.offset.begin());
+  return first_row;
+}
 
-// Each pair of the half list is visited once and applied to both particles, with the per-pair
-// physics of sph_terms.hpp (Eqs 3, 4, 10), four pairs of a row at a time (one per lane). Pairs
-// beyond the kernel support (the list has a skin) and padding get g = 0 and add exact zeros. The
+// The pairs of rows [begin, end) added to sums, four pairs of a row at a time (one per lane). The
 // differences x_ij, v_ij are taken on the records, before the transpose: fewer registers stay live.
-void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel_of_step,
-                      const EquationOfState& eos, double viscosity_Pa_s, FluidRates& out) {
-  fill_records(f, eos, out);
+void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
+                    const double* records, int begin, int end, double* sums) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
-  const double* position = out.records.data() + kPosition;
-  const double* velocity = out.records.data() + kVelocity;
-  const double* factors = out.records.data() + kFactors;
-  double* sums = out.records.data() + kSums;
+  const double* position = records + kPosition;
+  const double* velocity = records + kVelocity;
+  const double* factors = records + kFactors;
   const double4 mu_sum = simd::broadcast(2.0 * viscosity_Pa_s);  // mu_i + mu_j: one viscosity
-  for (int i = 0; i < pairs.rows(); ++i) {
+  for (int i = begin; i < end; ++i) {
     const double4 x_i = simd::load(position + kRecord * i), v_i = simd::load(velocity + kRecord * i);
     const double4 mi = simd::broadcast(factors[kRecord * i]), Ai = simd::broadcast(factors[kRecord * i + 1]),
                   Vi = simd::broadcast(factors[kRecord * i + 2]);
@@ -88,17 +95,53 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
                        pressure * xij.field[1] + viscous * vij.field[1],
                        pressure * xij.field[2] + viscous * vij.field[2], -sph::continuity_rate(v_dot_grad, mi));
       for (int l = 0; l < kPairLanes; ++l) {
-        double* sum_j = sums + kRecord * j[l];
+        double* sum_j = sums + kSum * j[l];
         simd::store(sum_j, simd::load(sum_j) - on_j.field[l]);
         sum_i += on_j.field[l];
       }
     }
     sum_i[3] = simd::sum(drho_i);
-    simd::store(sums + kRecord * i, simd::load(sums + kRecord * i) + sum_i);
+    simd::store(sums + kSum * i, simd::load(sums + kSum * i) + sum_i);
   }
+}
+
+}  // namespace
+
+// Each pair of the half list is visited once and applied to both particles, with the per-pair
+// physics of sph_terms.hpp (Eqs 3, 4, 10). Pairs beyond the kernel support (the list has a skin)
+// and padding get g = 0 and add exact zeros. Each thread adds its rows into its own sums, which
+// are then added up in thread order.
+void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out) {
   const Eigen::Index n = f.size();
-  out.force = out.records.block(kSums, 0, 3, n);
-  out.drho_dt = out.records.row(kSums + 3).head(n).transpose();
+  out.pressure.resize(n);
+  out.records.resize(kRecord, n + 1);
+  out.thread_sums.resize(static_cast<std::size_t>(threads));
+  const std::vector<int> first_row = split_rows(pairs, threads);
+  const auto run_thread = [&](int t) {
+    fill_records(f, eos, n * t / threads, n * (t + 1) / threads, out);
+    out.thread_sums[static_cast<std::size_t>(t)].setZero(kSum, n + 1);
+#ifdef _OPENMP
+#pragma omp barrier  // every record is written before any thread reads them
+#endif
+    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), first_row[t], first_row[t + 1],
+                   out.thread_sums[static_cast<std::size_t>(t)].data());
+  };
+  if (threads == 1) {
+    run_thread(0);
+  } else {
+    // Threads bound to cores (spread): unbound, the scheduler often stacked them on one core.
+#ifdef _OPENMP
+#pragma omp parallel num_threads(threads) proc_bind(spread)
+#endif
+    run_thread(thread_index());
+  }
+  out.force = out.thread_sums[0].topRows(3).leftCols(n);
+  out.drho_dt = out.thread_sums[0].row(3).head(n).transpose();
+  for (std::size_t t = 1; t < out.thread_sums.size(); ++t) {
+    out.force += out.thread_sums[t].topRows(3).leftCols(n);
+    out.drho_dt += out.thread_sums[t].row(3).head(n).transpose();
+  }
 }
 
 }  // namespace cellsim

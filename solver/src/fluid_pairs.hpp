@@ -1,6 +1,8 @@
 #pragma once
 // The fluid-fluid pair loop: continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms over
 // a half pair list, each pair visited once and applied to both particles.
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "eos.hpp"
@@ -14,13 +16,14 @@ struct FluidRates {
   Eigen::Matrix3Xd force;   // [N]
   Eigen::VectorXd drho_dt;  // continuity part only [kg/m^3/s]
   Eigen::VectorXd pressure; // EOS pressure [Pa]
-  // Scratch of the pair loop, kept to avoid reallocation: one record per particle (fluid_pairs.cpp
-  // says what it holds).
-  Eigen::Matrix<double, 16, Eigen::Dynamic> records;
+  // Scratch of the pair loop, kept to avoid reallocation: one record per particle, and the sums
+  // of each thread (fluid_pairs.cpp says what they hold).
+  Eigen::Matrix<double, 12, Eigen::Dynamic> records;
+  std::vector<Eigen::Matrix4Xd> thread_sums;
 };
 
-// Overwrites out (sized to the fluid).
+// Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
-                      const EquationOfState& eos, double viscosity_Pa_s, FluidRates& out);
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out);
 
 }  // namespace cellsim

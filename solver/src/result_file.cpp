@@ -44,13 +44,14 @@ ResultFile::ResultFile(const std::string& final_path)
 
 ResultFile::~ResultFile() = default;
 
-void ResultFile::write_header(const nlohmann::json& resolved_case) {
+void ResultFile::write_header(const nlohmann::json& resolved_case, int threads) {
   const hid_t root = file_.id();
   h5::set_attr(root, "case_json", resolved_case.dump(2));
   h5::set_attr(root, "solver", std::string("cellsim"));
   h5::set_attr(root, "solver_version", std::string(kVersion));
   h5::set_attr(root, "git_revision", std::string(kGitRevision));
   h5::set_attr(root, "instruction_set", std::string(kInstructionSet));
+  h5::set_attr(root, "threads", std::int64_t{threads});  // results are bit-identical only for the same count
   h5::set_attr(root, "units", std::string("SI throughout; each dataset carries a 'unit' attribute"));
   snapshots_ = h5::create_group(root, "snapshots");
 }

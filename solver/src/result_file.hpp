@@ -23,7 +23,7 @@ class ResultFile {
   ResultFile(const ResultFile&) = delete;
   ResultFile& operator=(const ResultFile&) = delete;
 
-  void write_header(const nlohmann::json& resolved_case);
+  void write_header(const nlohmann::json& resolved_case, int threads);  // threads: of the fluid pair loop
   void write_mesh(const WallMesh& mesh, long n_fluid);
   void write_snapshot(const State& s, const EquationOfState& eos);
   // Time series, the state to continue from, completed = 1; then rename and write the sidecars.

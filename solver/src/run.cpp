@@ -62,8 +62,9 @@ void run_case(Params p, const RunOptions& options) {
                        ", not the end of drying (run it with compression.steps = 0)");
   }
   Simulation sim(p, cell);  // refuses a time step over the wall-spring limit, before any output
+  sim.set_threads(options.threads);
   ResultFile out(options.output_path);
-  out.write_header(resolved);
+  out.write_header(resolved, options.threads);
   out.write_mesh(cell.mesh, static_cast<long>(p.n_fluid));
 
   std::vector<Record> records;

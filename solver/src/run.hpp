@@ -10,6 +10,7 @@ struct RunOptions {
   std::string output_path;
   std::string from_path;  // continue from the end-of-drying state in this result file (--from)
   bool quiet = false;     // no progress lines on stderr
+  int threads = 1;        // for the fluid pair loop (threads.hpp)
 };
 
 // Throws InputError before writing anything under the output's final name, NumericalFailure

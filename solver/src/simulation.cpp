@@ -7,6 +7,7 @@
 #include "errors.hpp"
 #include "mass_transfer.hpp"
 #include "plates.hpp"
+#include "threads.hpp"
 #include "wall_fluid.hpp"
 #include "wall_terms.hpp"
 
@@ -61,6 +62,11 @@ Simulation::Simulation(const Params& p, const Cell& cell)
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
   initial_diameter_m_ = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
   compute_rates();
+}
+
+void Simulation::set_threads(int threads) {
+  check_thread_count(threads);
+  threads_ = threads;
 }
 
 EquationOfState Simulation::eos() const {
@@ -122,7 +128,7 @@ void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
   neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m);
   timer_.lap(Phase::Neighbours);
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, fluid_);
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
   timer_.lap(Phase::FluidPairs);
 }
 

@@ -39,6 +39,8 @@ class Simulation {
   const PhaseTimer& timer() const { return timer_; }
   const NeighbourLists& neighbours() const { return neighbours_; }
   PhaseTimer& timer() { return timer_; }
+  // Threads for the fluid pair loop (threads.hpp); 1 unless set. Throws InputError if impossible.
+  void set_threads(int threads);
 
   // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
   void check_containment() const;
@@ -57,6 +59,8 @@ class Simulation {
   void check_state() const;
   void check_time_step() const;
   std::string where() const;
+
+  int threads_ = 1;
 
   Params p_;
   WallMesh mesh_;

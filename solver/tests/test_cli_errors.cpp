@@ -113,3 +113,12 @@ TEST(Cli, HelpAndVersionSucceed) {
   EXPECT_EQ(run_cli("--help", dir).exit_code, 0);
   EXPECT_EQ(run_cli("--version", dir).exit_code, 0);
 }
+
+TEST(CliErrors, ThreadCountOutOfRange) {
+  ScratchDir dir("threads");
+  const auto c = dir.write("case.json", kTinyCase);
+  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads 0", dir, {"--threads", "positive integer"});
+  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads 100000", dir,
+                     {"--threads = 100000", "between 1 and"});
+  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads two", dir, {"--threads", "'two'"});
+}

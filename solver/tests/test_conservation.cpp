@@ -48,7 +48,7 @@ TEST(Conservation, FluidPairTermsConserveMomentum) {
   const CubicSplineKernel kernel(1.3 * dx);
   lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
   FluidRates rates;
-  fluid_pair_terms(f, lists.fluid_fluid(), kernel, {2e5, 20e6, 1000, 7}, 0.1, rates);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, {2e5, 20e6, 1000, 7}, 0.1, 1, rates);
   const double scale = rates.force.colwise().norm().maxCoeff();
   ASSERT_GT(scale, 0.0);
   EXPECT_LT(rates.force.rowwise().sum().norm(), 1e-12 * scale * f.size());
@@ -66,7 +66,7 @@ TEST(Conservation, ViscosityAloneDissipatesKineticEnergy) {
   const Eigen::Vector3d momentum0 = f.v * f.m;
   for (int step = 0; step < 200; ++step) {
     lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
-    fluid_pair_terms(f, lists.fluid_fluid(), kernel, no_pressure, 0.1, rates);
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, no_pressure, 0.1, 1, rates);
     for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += dt / f.m[i] * rates.force.col(i);
     f.x += dt * f.v;
     const double now = kinetic_energy(f);

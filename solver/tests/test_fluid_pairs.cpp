@@ -7,6 +7,7 @@
 
 #include "fluid_pairs.hpp"
 #include "sph_terms.hpp"
+#include "threads.hpp"
 
 using namespace cellsim;
 
@@ -42,7 +43,7 @@ TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
   NeighbourLists lists(0.2 * dx);
   lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
   FluidRates rates;
-  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, rates);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, rates);
 
   const Eigen::Index n = f.size();
   Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, n);
@@ -98,4 +99,23 @@ TEST(FluidPairs, ListRowsArePaddedToWholeLanesWithAnIndexPastTheFluid) {
   }
   EXPECT_EQ(list.pairs, real);
   EXPECT_GT(padding, 0u);
+}
+
+TEST(FluidPairs, ThreadsAgreeToRoundOffAndEachCountIsReproducible) {
+  if (!built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
+  const double dx = 7.7e-6;
+  const FluidParticles f = random_fluid(9, dx, 5);
+  const CubicSplineKernel kernel(1.3 * dx);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  NeighbourLists lists(0.2 * dx);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  FluidRates one, three, three_again;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 1, one);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 3, three);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 3, three_again);
+  EXPECT_TRUE(three.force == three_again.force && three.drho_dt == three_again.drho_dt);  // bit for bit
+  const double force_scale = one.force.colwise().norm().maxCoeff(), drho_scale = one.drho_dt.cwiseAbs().maxCoeff();
+  EXPECT_LT((three.force - one.force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
+  EXPECT_LT((three.drho_dt - one.drho_dt).cwiseAbs().maxCoeff(), 1e-12 * drho_scale);
+  EXPECT_FALSE(three.force == one.force) << "the threads' sums were not used (or the split is trivial)";
 }

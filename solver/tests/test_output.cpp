@@ -10,6 +10,7 @@
 
 #include "cli_helpers.hpp"
 #include "h5.hpp"
+#include "threads.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;
@@ -84,4 +85,23 @@ TEST(Output, OverridesAreValidatedAndRecorded) {
   const auto resolved = nlohmann::json::parse(h5::get_attr_string(f.id(), "case_json"));
   EXPECT_EQ(resolved.at("drying").at("dryness"), 0.5);
   EXPECT_EQ(resolved.at("wall").at("G_MPa"), 0.18);
+}
+
+TEST(Output, TwoThreadsTwiceGiveIdenticalFilesThatAgreeWithOneThreadToRoundOff) {
+  if (!cellsim::built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
+  ScratchDir dir("threads");
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "drying": {"steps": 400},
+                                            "compression": {"steps": 0}, "output": {"record_every": 100}})");
+  for (const char* name : {"two_a.h5", "two_b.h5"})
+    ASSERT_EQ(run_cli("run " + c + " -o " + dir.file(name) + " --threads 2 --quiet", dir).exit_code, 0);
+  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("one.h5") + " --quiet", dir).exit_code, 0);
+  EXPECT_TRUE(bytes(dir.file("two_a.h5")) == bytes(dir.file("two_b.h5")));
+  h5::Handle two = h5::open_file_readonly(dir.file("two_a.h5")), one = h5::open_file_readonly(dir.file("one.h5"));
+  EXPECT_EQ(h5::get_attr_int(two.id(), "threads"), 2);
+  EXPECT_EQ(h5::get_attr_int(one.id(), "threads"), 1);
+  const auto p2 = h5::read_doubles(two.id(), "timeseries/mean_pressure_Pa"),
+             p1 = h5::read_doubles(one.id(), "timeseries/mean_pressure_Pa");
+  ASSERT_EQ(p1.size(), p2.size());
+  ASSERT_GE(p1.size(), 5u);
+  for (std::size_t k = 0; k < p1.size(); ++k) EXPECT_NEAR(p2[k], p1[k], 1e-6 * std::abs(p1.back())) << k;
 }
