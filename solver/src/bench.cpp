@@ -25,7 +25,15 @@ void run_benchmark(Params p, const BenchOptions& options) {
     sim.set_threads(options.threads);
     sim.timer().reset();
     const auto start = std::chrono::steady_clock::now();
-    for (long n = 0; n < options.steps; ++n) sim.step();
+    for (long n = 1; n <= options.steps; ++n) {
+      sim.step();
+      if (n % p.record_every == 0) {  // what a run adds at each record (snapshots are file output)
+        sim.timer().start();
+        sim.check_containment();
+        sim.record();
+        sim.timer().lap(Phase::Recording);
+      }
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ms_per_step.push_back(1e3 * seconds / options.steps);
     for (int ph = 0; ph < static_cast<int>(Phase::Count); ++ph)

@@ -12,7 +12,7 @@ namespace cellsim::testing {
 
 struct CliResult {
   int exit_code;
-  std::string err;
+  std::string err, out;  // stderr and stdout
 };
 
 // A fresh scratch directory per test, removed at the end.
@@ -36,14 +36,17 @@ class ScratchDir {
 };
 
 inline CliResult run_cli(const std::string& args, const ScratchDir& dir) {
-  const std::string err_file = dir.file("stderr.txt");
-  const std::string cmd = std::string(CELLSIM_EXE) + " " + args + " > /dev/null 2> " + err_file;
+  const std::string err_file = dir.file("stderr.txt"), out_file = dir.file("stdout.txt");
+  const std::string cmd = std::string(CELLSIM_EXE) + " " + args + " > " + out_file + " 2> " + err_file;
   const int status = std::system(cmd.c_str());
-  std::ifstream in(err_file);
-  std::stringstream text;
-  text << in.rdbuf();
+  const auto contents = [](const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return {code, text.str()};
+  return {code, contents(err_file), contents(out_file)};
 }
 
 }  // namespace cellsim::testing
