@@ -24,6 +24,11 @@ Eigen::Matrix3Xd fibonacci_sphere(int n, double radius) {
 }
 
 WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::array<int, 3>> triangles) {
+  // Triangles in memory order (each rotated to start at its smallest vertex, which keeps its
+  // orientation, then sorted), so the loops over triangles and hinges walk the wall particles in
+  // order rather than in the hull's construction order.
+  for (auto& t : triangles) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(triangles.begin(), triangles.end());
   WallMesh mesh;
   // Each directed edge (u -> v) of an outward triangle; its twin (v -> u) lives in the neighbour.
   // directed edge -> (vertex opposite it, triangle index)
