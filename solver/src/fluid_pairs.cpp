@@ -109,8 +109,9 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
 
 // Each pair of the half list is visited once and applied to both particles, with the per-pair
 // physics of sph_terms.hpp (Eqs 3, 4, 10). Pairs beyond the kernel support (the list has a skin)
-// and padding get g = 0 and add exact zeros. Each thread adds its rows into its own sums, which
-// are then added up in thread order.
+// and padding get g = 0 and add exact zeros. The work is cut into `threads` blocks, each with its
+// own sums, added up in block order at the end: the result depends on the block count only, even
+// if the runtime runs the blocks on fewer threads than asked.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out) {
   const Eigen::Index n = f.size();
@@ -118,23 +119,26 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.records.resize(kRecord, n + 1);
   out.thread_sums.resize(static_cast<std::size_t>(threads));
   const std::vector<int> first_row = split_rows(pairs, threads);
-  const auto run_thread = [&](int t) {
-    fill_records(f, eos, n * t / threads, n * (t + 1) / threads, out);
-    out.thread_sums[static_cast<std::size_t>(t)].setZero(kSum, n + 1);
+  const auto run_blocks = [&](int first, int stride) {
+    for (int t = first; t < threads; t += stride) {
+      fill_records(f, eos, n * t / threads, n * (t + 1) / threads, out);
+      out.thread_sums[static_cast<std::size_t>(t)].setZero(kSum, n + 1);
+    }
 #ifdef _OPENMP
-#pragma omp barrier  // every record is written before any thread reads them
+#pragma omp barrier  // every record is written before any block reads them
 #endif
-    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), first_row[t], first_row[t + 1],
-                   out.thread_sums[static_cast<std::size_t>(t)].data());
+    for (int t = first; t < threads; t += stride)
+      add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), first_row[t], first_row[t + 1],
+                     out.thread_sums[static_cast<std::size_t>(t)].data());
   };
   if (threads == 1) {
-    run_thread(0);
+    run_blocks(0, 1);
   } else {
     // Threads bound to cores (spread): unbound, the scheduler often stacked them on one core.
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) proc_bind(spread)
 #endif
-    run_thread(thread_index());
+    run_blocks(thread_index(), team_size());
   }
   out.force = out.thread_sums[0].topRows(3).leftCols(n);
   out.drho_dt = out.thread_sums[0].row(3).head(n).transpose();

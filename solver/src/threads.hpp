@@ -23,12 +23,21 @@ inline bool built_with_openmp() {
 #endif
 }
 
-// The index of the calling thread within the current parallel region (0 outside one).
+// The index of the calling thread within the current parallel region (0 outside one), and the
+// number of threads the region really got (the runtime may give fewer than asked, e.g. under
+// OMP_THREAD_LIMIT).
 inline int thread_index() {
 #ifdef _OPENMP
   return omp_get_thread_num();
 #else
   return 0;
+#endif
+}
+inline int team_size() {
+#ifdef _OPENMP
+  return omp_get_num_threads();
+#else
+  return 1;
 #endif
 }
 

@@ -118,4 +118,13 @@ TEST(FluidPairs, ThreadsAgreeToRoundOffAndEachCountIsReproducible) {
   EXPECT_LT((three.force - one.force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
   EXPECT_LT((three.drho_dt - one.drho_dt).cwiseAbs().maxCoeff(), 1e-12 * drho_scale);
   EXPECT_FALSE(three.force == one.force) << "the threads' sums were not used (or the split is trivial)";
+#ifdef _OPENMP
+  // If the runtime grants fewer threads than asked, every block still runs, with the same result.
+  const int levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(0);  // parallel regions run on one thread
+  FluidRates three_on_one;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 3, three_on_one);
+  omp_set_max_active_levels(levels);
+  EXPECT_TRUE(three_on_one.force == three.force && three_on_one.drho_dt == three.drho_dt);
+#endif
 }
