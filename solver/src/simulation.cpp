@@ -30,6 +30,14 @@ double wall_spring_limit(const WallMesh& mesh, const Params& p, double wall_mass
   return 2.0 / std::sqrt(2.0 * k_max / wall_mass);
 }
 
+// The state checks run on every step, so the common case is one packed pass per array; the particle
+// at fault is looked up only on failure. a - a is 0 for a finite entry and NaN otherwise, so the sum
+// of a - a is exactly 0 iff every entry is finite (and cannot overflow, unlike the sum of a).
+template <class Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& a) {
+  return (a.derived().array() - a.derived().array()).sum() == 0.0;
+}
+
 }  // namespace
 
 Simulation::Simulation(const Params& p, const Cell& cell)
@@ -208,14 +216,6 @@ std::string Simulation::where() const {
   s << "step " << s_.step << " (t = " << s_.time_s * 1e6 << " us, "
     << (s_.stage == Stage::Drying ? "drying" : "compression") << ")";
   return s.str();
-}
-
-// The checks run on every step, so the common case is one packed pass per array; the particle at
-// fault is looked up only on failure. a - a is 0 for a finite entry and NaN otherwise, so the sum of
-// a - a is exactly 0 iff every entry is finite (and cannot overflow, unlike the sum of a).
-template <class Derived>
-bool all_finite(const Eigen::DenseBase<Derived>& a) {
-  return (a.derived().array() - a.derived().array()).sum() == 0.0;
 }
 
 void Simulation::check_state() const {
