@@ -19,10 +19,10 @@ using namespace cellsim;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-// Measured 2026-11 on the 2-core AMD EPYC machines: 3.1-3.2 (x86-64-v3 build), 3.8-4.1 (baseline
-// build). 8 catches an accidental O(N^2) loop, a per-step allocation storm or a lost optimisation
-// flag (the code before the 2026-11 optimisations, 1.6 times slower per step, would be ~5), and
-// tolerates machine noise.
+// Measured 2026-11 on the 2-core AMD EPYC machines: 2.6-2.7 (x86-64-v3 build, four-lane pair loop;
+// 3.1-3.2 before it), 3.8-4.1 (baseline build, before it). 8 catches an accidental O(N^2) loop, a
+// per-step allocation storm or a lost optimisation flag (the code before the 2026-11 optimisations,
+// about twice as slow per step as now, would be ~5), and tolerates machine noise.
 constexpr double kRatioLimit = 8.0;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
