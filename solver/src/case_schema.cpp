@@ -83,14 +83,32 @@ std::vector<ParamSpec> build_specs() {
            "LJ contact strength for r0 <= r < r_c", "Eqs 13, 19"),
       real("coupling.attraction_cutoff_over_h", "1", 1.0, &P::attraction_cutoff_over_h, 2, 0, true, 2, true,
            "attraction cut-off r_c in units of the smoothing length h", "Eqs 13, 19"),
+      // settle: the start at rest
+      integer("settle.max_iterations", &P::settle_max_iterations, 20000, 0, 1e9,
+              "pseudo-steps of the relaxation at rest at the fresh turgor before drying starts (0: start "
+              "from the cut lattice as built, with its shock)", "docs/model-closures.md"),
+      real("settle.tolerance", "1", 1.0, &P::settle_tolerance, 3e-4, 0, false, 1, true,
+           "the relaxation stops when the largest fluid acceleration is below this fraction of "
+           "P_T0 / (rho0 dx)", "docs/model-closures.md"),
       // drying
       real("drying.dryness", "1", 1.0, &P::dryness, 1.0, 0, false, 1, true,
            "normalised moisture content X/X0 (1: fresh)", "Eq 21, model §5"),
-      integer("drying.steps", &P::drying_steps, 50000, 0, 1e9, "time steps of the drying stage", "model §5"),
+      integer("drying.steps", &P::drying_steps, 80000, 0, 1e9,
+              "most time steps of the drying stage: it ends earlier, at steady state (a case that reaches "
+              "the cap without it says so)", "model §5"),
       real("drying.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::drying_Lp_m_per_s_Pa, 2.5e-6, 0, true, 1, true,
            "wall permeability L_p during drying (raised to reach steady state fast)", "Eq 11"),
       real("drying.ramp_time_us", "us", kMicro, &P::ramp_time_s, 20, 0, true, 1e6, true,
-           "time over which L_ref ramps (smoothstep) from l0 to L_ref(X)", "Eq 21, model §5"),
+           "time over which L_ref and the turgor ramp (smoothstep) from their fresh values to those of X", "Eq 21, model §5"),
+      real("drying.steady_window_us", "us", kMicro, &P::steady_window_s, 5, 0, false, 1e6, true,
+           "steady state: the criteria below must hold over this window, after the ramp", "model §5"),
+      real("drying.steady_pressure_tolerance", "1", 1.0, &P::steady_pressure_tolerance, 0.005, 0, false, 1, true,
+           "steady state: |mean fluid pressure - P_T(X)| at most this fraction of P_T0", "model §5"),
+      real("drying.steady_volume_tolerance", "1", 1.0, &P::steady_volume_tolerance, 5e-4, 0, false, 1, true,
+           "steady state: (largest - smallest enclosed volume) / volume over the window at most this",
+           "model §5"),
+      real("drying.steady_rms_speed_m_s", "m/s", 1.0, &P::steady_rms_speed_m_s, 0.02, 0, false, 1000, true,
+           "steady state: rms fluid speed sqrt(2 KE / M) at most this", "model §5"),
       real("drying.pressure_closure_time_us", "us", kMicro, &P::pressure_closure_time_s, 2, 0, true, 1e6, true,
            "relaxation time of the wall-pressure closure during drying (0: off)", "docs/model-closures.md"),
       // compression

@@ -29,6 +29,7 @@ const std::vector<Quantity>& quantities() {
       {"equatorial_radius_m", "m", "largest horizontal distance of a wall particle from the wall centroid's axis",
        &Record::equatorial_radius_m},
       {"kinetic_energy_fluid_J", "J", "sum of m v^2 / 2 over fluid particles", &Record::kinetic_energy_fluid_J},
+      {"max_fluid_speed_m_s", "m/s", "speed of the fastest fluid particle", &Record::max_fluid_speed_m_s},
       {"kinetic_energy_wall_J", "J", "sum of m v^2 / 2 over wall particles", &Record::kinetic_energy_wall_J},
       {"wall_strain_mean", "1", "mean bond strain (l - l0) / l0", &Record::wall_strain_mean},
       {"wall_tension_N_m", "N/m", "mean wall tension: sum over bonds of tension x length / (2 x wall area)",
@@ -76,6 +77,7 @@ Record measure(const State& s, const WallMesh& mesh, const Params& p, const Equa
   r.step = static_cast<double>(s.step);
   r.fluid_mass_kg = f.m.sum();
   r.fluid_mass_ratio = r.fluid_mass_kg / s.initial_fluid_mass_kg;
+  r.max_fluid_speed_m_s = std::sqrt(f.v.colwise().squaredNorm().maxCoeff());
   double pressure_sum = 0;
   for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
   r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;

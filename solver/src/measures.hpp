@@ -16,7 +16,7 @@ struct Record {
   double fluid_mass_kg, fluid_mass_ratio, mean_pressure_Pa;
   double area_m2, volume_m3, equivalent_diameter_m, smoothing_length_m;
   double cell_height_m, equatorial_radius_m;
-  double kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
+  double max_fluid_speed_m_s, kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
   double wall_tension_N_m, wall_pressure_Pa;
   double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
   double contact_area_m2, contact_count;

@@ -36,9 +36,17 @@ struct Params {
   double attraction_f0_N_m = 0;         // f0 for r0 <= r < r_c
   double attraction_cutoff_over_h = 0;  // r_c / h
 
+  // the start at rest (settle.hpp)
+  std::int64_t settle_max_iterations = 0;  // 0: start from the cell as built
+  double settle_tolerance = 0;          // largest fluid acceleration / (P_T0 / (rho0 dx)) to stop at
+
   // drying stage, model.md §5
   double dryness = 0;                   // X/X0
-  std::int64_t drying_steps = 0;
+  std::int64_t drying_steps = 0;        // the cap: drying ends earlier at steady state
+  double steady_window_s = 0;           // steady_state.hpp: the window the criterion holds over
+  double steady_pressure_tolerance = 0; // |P_mean - P_T(X)| / P_T0
+  double steady_volume_tolerance = 0;   // (V_max - V_min) / V over the window
+  double steady_rms_speed_m_s = 0;      // sqrt(2 KE_fluid / M_fluid)
   double drying_Lp_m_per_s_Pa = 0;      // L_p, Eq 11
   double ramp_time_s = 0;               // smoothstep ramp of L_ref, model.md §5
   double pressure_closure_time_s = 0;   // relaxation time of the wall-pressure closure (0: off)

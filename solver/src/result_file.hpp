@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "drying_summary.hpp"
 #include "eos.hpp"
 #include "h5.hpp"
 #include "measures.hpp"
@@ -25,6 +26,7 @@ class ResultFile {
 
   void write_header(const nlohmann::json& resolved_case, int threads);  // threads: of the fluid pair loop
   void write_mesh(const WallMesh& mesh, long n_fluid);
+  void write_drying_summary(const DryingSummary& d);
   void write_snapshot(const State& s, const EquationOfState& eos);
   // Time series, the state to continue from, completed = 1; then rename and write the sidecars.
   void complete(const std::vector<Record>& records, const State& final_state);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "containment.hpp"
+#include "drying.hpp"
 #include "errors.hpp"
 #include "mass_transfer.hpp"
 #include "plates.hpp"
@@ -48,7 +49,6 @@ Simulation::Simulation(const Params& p, const Cell& cell)
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_{p.plate_range_m, p.plate_stiffness_N_m, p.plate_length_m, p.plate_width_m},
       bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
-      osmotic_Pa_(-p.turgor_Pa * p.dryness),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = cell.fluid_x;
   s_.fluid.v = Eigen::Matrix3Xd::Zero(3, cell.fluid_x.cols());
@@ -68,7 +68,7 @@ Simulation::Simulation(const Params& p, const Cell& cell)
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
-  initial_diameter_m_ = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
+  s_.reference_diameter_m = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
   compute_rates();
 }
 
@@ -77,8 +77,13 @@ void Simulation::set_threads(int threads) {
   threads_ = threads;
 }
 
+double Simulation::turgor_Pa() const {
+  if (s_.stage != Stage::Drying) return p_.turgor_Pa * p_.dryness;
+  return drying::turgor_Pa(p_.turgor_Pa, p_.dryness, drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s));
+}
+
 EquationOfState Simulation::eos() const {
-  return {p_.turgor_Pa * p_.dryness, p_.bulk_modulus_Pa, p_.fluid_density_kg_m3, p_.eos_exponent};
+  return {turgor_Pa(), p_.bulk_modulus_Pa, p_.fluid_density_kg_m3, p_.eos_exponent};
 }
 
 void Simulation::step() {
@@ -127,7 +132,7 @@ void Simulation::update_geometry() {
   wall_area_m2_ = 0.5 * triangle_normals_.norm.sum();
   volume_m3_ = six_volume / 6.0;
   const double diameter = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
-  s_.smoothing_length_m = diameter / initial_diameter_m_ * *p_.h0_m;
+  s_.smoothing_length_m = diameter / s_.reference_diameter_m * *p_.h0_m;
   lj_.cutoff_m = std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
 
@@ -145,15 +150,16 @@ void Simulation::mass_transfer() {
   auto& f = s_.fluid;
   dm_dt_.resize(f.size());
   const int n = static_cast<int>(f.size());
+  const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    dm_dt_[i] = mass_rate(wall_area_m2_, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa_);
+    dm_dt_[i] = mass_rate(wall_area_m2_, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa);
     fluid_.drho_dt[i] = density_rate(fluid_.drho_dt[i], f.rho[i], f.m[i], dm_dt_[i]);
   }
 }
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
-  const double ramp = s_.stage == Stage::Drying ? wall::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
+  const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
   const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_, bond_scratch_);
   s_.wall_tension_N_m = tension_length / (2.0 * wall_area_m2_);
   timer_.lap(Phase::WallBonds);
@@ -209,6 +215,17 @@ void Simulation::apply_pressure_closure() {
   if (!(mean_pressure > 0) || !(s_.wall_pressure_Pa > 0)) return;  // no turgor to match
   const double ratio = std::clamp(s_.wall_pressure_Pa / mean_pressure, 0.5, 2.0);
   s_.fluid.m *= std::pow(ratio, -p_.dt_s / (2.0 * tau));
+}
+
+void Simulation::start_at_rest() {
+  s_.fluid.v.setZero();
+  s_.wall.v.setZero();
+  s_.time_s = 0;
+  s_.step = s_.stage_step = 0;
+  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.reference_diameter_m = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
+  neighbours_.invalidate();
+  compute_rates();
 }
 
 std::string Simulation::where() const {

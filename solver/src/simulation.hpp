@@ -34,7 +34,8 @@ class Simulation {
   State& mutable_state() { return s_; }
   const WallMesh& mesh() const { return mesh_; }
   const Params& params() const { return p_; }
-  EquationOfState eos() const;
+  EquationOfState eos() const;  // with the turgor of the moment
+  double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
   Record record() const { return measure(s_, mesh_, p_, eos()); }
   const PhaseTimer& timer() const { return timer_; }
   const NeighbourLists& neighbours() const { return neighbours_; }
@@ -44,6 +45,15 @@ class Simulation {
 
   // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
   void check_containment() const;
+
+  // For the relaxation at rest (settle.hpp): forces at the current positions, and the restart of
+  // the clock once the cell is at rest (t = 0, velocities zero, D0 of Eq 6 and M_f0 taken anew).
+  void refresh_rates() { compute_rates(); }
+  const Eigen::Matrix3Xd& fluid_force() const { return fluid_.force; }
+  const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
+  double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
+  double wall_spring_dt_limit_s() const { return wall_spring_dt_limit_s_; }
+  void start_at_rest();
 
  private:
   void compute_rates();
@@ -70,7 +80,6 @@ class Simulation {
   LennardJones lj_;
   PlateLaw plate_law_;
   BondLaw bond_law_;
-  double osmotic_Pa_;           // Pi = -P_T(X)
 
   // Rates at the current positions.
   FluidRates fluid_;
@@ -80,7 +89,6 @@ class Simulation {
   TriangleNormals triangle_normals_;
   Eigen::Matrix3Xd vertex_normal_;  // area-weighted outward normals of the wall
   double wall_area_m2_ = 0, volume_m3_ = 0;
-  double initial_diameter_m_ = 0;  // D0 of Eq 6: equivalent diameter of the initial wall mesh
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;
   PhaseTimer timer_;

@@ -45,7 +45,8 @@ struct State {
   std::int64_t stage_step = 0;    // steps done in the current stage
   double time_s = 0;
   double smoothing_length_m = 0;  // h, Eq 6
-  double initial_fluid_mass_kg = 0;
+  double initial_fluid_mass_kg = 0;   // M_f0: fluid mass at the start of drying (after the settle)
+  double reference_diameter_m = 0;    // D0 of Eq 6: equivalent diameter of the wall at the start
   // Diagnostics of the last force evaluation (recorded, not state to integrate).
   double wall_tension_N_m = 0;    // mean membrane tension: sum(tension x length) / (2 area)
   double wall_pressure_Pa = 0;    // outward LJ push on the wall along its normals / area

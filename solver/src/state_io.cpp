@@ -32,6 +32,7 @@ void write_state(hid_t parent, const State& s) {
   h5::set_attr(g.id(), "stage", static_cast<std::int64_t>(s.stage));
   h5::set_attr(g.id(), "smoothing_length_m", s.smoothing_length_m);
   h5::set_attr(g.id(), "initial_fluid_mass_kg", s.initial_fluid_mass_kg);
+  h5::set_attr(g.id(), "reference_diameter_m", s.reference_diameter_m);
   h5::set_attr(g.id(), "wall_mass_kg", s.wall.mass_kg);
   h5::set_attr(g.id(), "plates_active", static_cast<std::int64_t>(s.plates.active));
   h5::set_attr(g.id(), "plate_contacts", static_cast<std::int64_t>(s.plates.contacts));
@@ -52,6 +53,13 @@ SavedRun read_saved_run(const std::string& path) {
     if (!h5::has_attr(file.id(), "completed") || h5::get_attr_int(file.id(), "completed") != 1)
       throw InputError("--from '" + path + "' is not a completed cellsim result (completed != 1)");
     run.case_json = h5::get_attr_string(file.id(), "case_json");
+    DryingSummary& d = run.drying;
+    d.settle.iterations = h5::get_attr_int(file.id(), "settle_iterations");
+    d.settle.residual = h5::get_attr_double(file.id(), "settle_residual");
+    d.settle.converged = h5::get_attr_int(file.id(), "settle_converged") != 0;
+    d.settle.mass_ratio = h5::get_attr_double(file.id(), "settle_mass_ratio");
+    d.steady = h5::get_attr_int(file.id(), "drying_steady") != 0;
+    d.steady_time_s = h5::get_attr_double(file.id(), "drying_steady_time_s");
     h5::Handle g = h5::open_group(file.id(), "state");
     State& s = run.state;
     s.time_s = h5::get_attr_double(g.id(), "time_s");
@@ -60,6 +68,7 @@ SavedRun read_saved_run(const std::string& path) {
     s.stage = static_cast<Stage>(h5::get_attr_int(g.id(), "stage"));
     s.smoothing_length_m = h5::get_attr_double(g.id(), "smoothing_length_m");
     s.initial_fluid_mass_kg = h5::get_attr_double(g.id(), "initial_fluid_mass_kg");
+    s.reference_diameter_m = h5::get_attr_double(g.id(), "reference_diameter_m");
     s.wall.mass_kg = h5::get_attr_double(g.id(), "wall_mass_kg");
     s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
     s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "drying_summary.hpp"
 #include "h5.hpp"
 #include "measures.hpp"
 #include "state.hpp"
@@ -16,6 +17,7 @@ struct SavedRun {
   State state;
   std::vector<Record> records;
   std::string case_json;
+  DryingSummary drying;
 };
 
 // Reads a complete result file; throws InputError if it is missing, incomplete or malformed.

@@ -13,18 +13,11 @@ inline double stiff_tension(double G_Pa, double thickness_m, double l0, double l
   return G_Pa * thickness_m * l0 / std::sqrt(3.0) * (lambda - 1.0 / lambda);
 }
 
-// Contraction, Eq 21: k_wc (l - L_ref), L_ref = l0 [1 - c (1 - X) ramp], ramp in [0, 1].
+// Contraction, Eq 21: k_wc (l - L_ref), L_ref = l0 [1 - c (1 - X) ramp], ramp in [0, 1] (drying.hpp).
 inline double contraction_tension(double k_wc, double l, double l_ref) { return k_wc * (l - l_ref); }
 
 inline double contraction_rest_length(double l0, double contraction_ratio, double dryness, double ramp) {
   return l0 * (1.0 - contraction_ratio * (1.0 - dryness) * ramp);
-}
-
-// Smoothstep ramp of L_ref over ramp_time (model.md §5): 0 at t = 0, 1 from ramp_time on.
-inline double smoothstep_ramp(double t, double ramp_time) {
-  if (ramp_time <= 0 || t >= ramp_time) return 1.0;
-  const double u = t / ramp_time;
-  return u * u * (3.0 - 2.0 * u);
 }
 
 // Damping, Eq 16: F_k = -gamma (v_k - v_j) on particle k (and the opposite on j).

@@ -63,14 +63,29 @@ TEST(NumericalFailure, AHealthyStateRunsOn) {
 
 TEST(NumericalFailure, TheCliExitsWithCodeThreeAndLeavesOnlyAPartialFile) {
   cellsim::testing::ScratchDir dir("blowup");
-  // 50 times the paper's turgor pushes the fluid through the wall within a microsecond.
+  // 50 times the paper's turgor pushes the fluid through the wall within a microsecond (started
+  // from the cell as built, so that the time stepping is what fails).
   const auto r = cellsim::testing::run_cli("run " + std::string(CELLSIM_SOURCE_DIR) +
                                       "/solver/examples/apple-baseline.json -o " + dir.file("out.h5") +
                                       " --quiet --set cell.turgor_kPa=5000 --set drying.steps=2000"
-                                      " --set compression.steps=0",
+                                      " --set compression.steps=0 --set settle.max_iterations=0",
                                   dir);
   EXPECT_EQ(r.exit_code, kExitNumericalFailure) << r.err;
   EXPECT_NE(r.err.find("numerical failure: step "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("outside the cell wall"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("out.h5.partial")));
+}
+
+TEST(NumericalFailure, ARelaxationAtRestThatPushesFluidOutStopsTheRunBeforeAnyStep) {
+  cellsim::testing::ScratchDir dir("settle-leak");
+  // No wall holds 5 MPa of turgor at rest: the relaxation itself finds the fluid outside.
+  const auto r = cellsim::testing::run_cli("run " + std::string(CELLSIM_SOURCE_DIR) +
+                                      "/solver/examples/apple-baseline.json -o " + dir.file("out.h5") +
+                                      " --quiet --set cell.turgor_kPa=5000 --set compression.steps=0",
+                                  dir);
+  EXPECT_EQ(r.exit_code, kExitNumericalFailure) << r.err;
+  EXPECT_NE(r.err.find("relaxation at rest (settle)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("outside the cell wall"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
   EXPECT_TRUE(std::filesystem::exists(dir.file("out.h5.partial")));

@@ -90,7 +90,7 @@ TEST(Output, OverridesAreValidatedAndRecorded) {
 TEST(Output, TwoThreadsTwiceGiveIdenticalFilesThatAgreeWithOneThreadToRoundOff) {
   if (!cellsim::built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
   ScratchDir dir("threads");
-  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "drying": {"steps": 400},
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "drying": {"steps": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},
                                             "compression": {"steps": 0}, "output": {"record_every": 100}})");
   for (const char* name : {"two_a.h5", "two_b.h5"})
     ASSERT_EQ(run_cli("run " + c + " -o " + dir.file(name) + " --threads 2 --quiet", dir).exit_code, 0);

@@ -2,6 +2,7 @@
 // mass transfer direction (Eq 11).
 #include <gtest/gtest.h>
 
+#include "drying.hpp"
 #include "lennard_jones.hpp"
 #include "mass_transfer.hpp"
 #include "sph_terms.hpp"
@@ -42,10 +43,18 @@ TEST(PairTerms, StiffAndContractionTensions) {
   EXPECT_EQ(wall::contraction_rest_length(6e-6, 0.4, 0.1, 0.0), 6e-6);
   EXPECT_NEAR(wall::contraction_tension(1e4, 6e-6, 0.64 * 6e-6), 1e4 * 0.36 * 6e-6, 1e-15);
   // Smoothstep ramp: 0, 1/2, 1 with zero slope at both ends.
-  EXPECT_EQ(wall::smoothstep_ramp(0, 20e-6), 0.0);
-  EXPECT_NEAR(wall::smoothstep_ramp(10e-6, 20e-6), 0.5, 1e-15);
-  EXPECT_EQ(wall::smoothstep_ramp(25e-6, 20e-6), 1.0);
-  EXPECT_LT(wall::smoothstep_ramp(0.2e-6, 20e-6), 1e-3);
+  EXPECT_EQ(drying::smoothstep_ramp(0, 20e-6), 0.0);
+  EXPECT_NEAR(drying::smoothstep_ramp(10e-6, 20e-6), 0.5, 1e-15);
+  EXPECT_EQ(drying::smoothstep_ramp(25e-6, 20e-6), 1.0);
+  EXPECT_LT(drying::smoothstep_ramp(0.2e-6, 20e-6), 1e-3);
+}
+
+TEST(PairTerms, TurgorFollowsTheDryingRampFromFreshToItsDrynessValue) {
+  // model.md §5: P_T0 at the start of drying (the settled fresh cell), P_T0 X once the ramp is done.
+  EXPECT_EQ(drying::turgor_Pa(200e3, 0.1, 0.0), 200e3);
+  EXPECT_NEAR(drying::turgor_Pa(200e3, 0.1, 1.0), 20e3, 1e-9);
+  EXPECT_NEAR(drying::turgor_Pa(200e3, 0.1, 0.5), 110e3, 1e-9);
+  EXPECT_EQ(drying::turgor_Pa(200e3, 1.0, 0.7), 200e3);  // a fresh cell keeps its turgor throughout
 }
 
 TEST(PairTerms, LennardJonesShape) {
