@@ -3,7 +3,7 @@ metrics. Every case parameter is a column ('cell.turgor_kPa', ...), and so is ev
 import numpy as np
 import pandas as pd
 
-from analysis.results import flatten, resolved_case, timeseries
+from analysis.results import drying_summary, flatten, resolved_case, timeseries
 
 STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
 
@@ -56,5 +56,5 @@ def tables(runs):
         params = {"case": case.name, "dried": case.dried, "studies": " ".join(case.studies), **case.values,
                   **flatten(resolved_case(path))}
         series.append(ts.assign(**{k: v for k, v in params.items()}))
-        summary.append({**params, **summarise(ts)})
+        summary.append({**params, **drying_summary(path), **summarise(ts)})
     return pd.concat(series, ignore_index=True), pd.DataFrame(summary)

@@ -14,6 +14,7 @@ QUANTITIES = {
     "smoothing_length_m": ("smoothing length h [um]", 1e6),
     "cell_height_m": ("cell height [um]", 1e6),
     "equatorial_radius_m": ("equatorial radius [um]", 1e6),
+    "max_fluid_speed_m_s": ("fastest fluid particle [m/s]", 1.0),
     "kinetic_energy_fluid_J": ("fluid kinetic energy [pJ]", 1e12),
     "kinetic_energy_wall_J": ("wall kinetic energy [pJ]", 1e12),
     "wall_strain_mean": ("mean wall bond strain", 1.0),

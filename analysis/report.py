@@ -38,7 +38,8 @@ def claims_table(rows):
 
 
 def matrix_table(summary, axes):
-    columns = ["case"] + list(axes) + ["studies", "dried_M_over_M0", "dried_V_over_V0", "dried_mean_pressure_kPa",
+    columns = ["case"] + list(axes) + ["studies", "drying_steady_time_us", "dried_M_over_M0", "dried_V_over_V0",
+                                       "dried_mean_pressure_kPa",
                                        "strain_reached", "stress_kPa_at_0.05", "stress_kPa_at_0.10", "peak_force_top_uN"]
     columns = [c for c in columns if c in summary.columns]
     head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
@@ -49,12 +50,28 @@ def matrix_table(summary, axes):
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
 
+def warnings_box(summary):
+    """Cases whose start or drying did not end as it should (drying at its cap unsteady, a relaxation at
+    rest that did not converge): a visible box at the top, or nothing."""
+    if "warning" not in summary.columns:
+        return ""
+    flagged = summary[summary["warning"].fillna("") != ""]
+    if flagged.empty:
+        return ""
+    items = "".join(f"<li><code>{html.escape(r['case'])}</code>: {html.escape(r['warning'])}</li>"
+                    for _, r in flagged.iterrows())
+    return (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady state "
+            f"as they should.</b> Their compressions start from a cell still settling; raise drying.steps or "
+            f"settle.max_iterations in config.<ul>{items}</ul></div>")
+
+
 def write(path, config, cases, summary, claim_rows, figure_files, root="."):
     root = pathlib.Path(root)
     here = pathlib.Path(path).parent
     parts = [markdown.markdown((root / "paper" / "report_intro.md").read_text())]
     parts.append(f"<p class='meta'>Generated {datetime.date.today().isoformat()} from {len(cases)} cases "
                  f"(output folder <code>{html.escape(config['output_dir'])}</code>).</p>")
+    parts.append(warnings_box(summary))
     parts.append("<h2>The paper's claims and this run</h2>")
     parts.append(claims_table(claim_rows))
     parts.append("<h2>Figures</h2>")
@@ -69,6 +86,7 @@ def write(path, config, cases, summary, claim_rows, figure_files, root="."):
     style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
              "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
              "img{max-width:100%}figure{margin:2em 0}.agree td:last-child{color:green}"
-             ".disagree td:last-child{color:#b00}.not-run td:last-child{color:grey}")
+             ".disagree td:last-child{color:#b00}.not-run td:last-child{color:grey}"
+             ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
     pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>cellsim reproduction report"
                                   f"</title><style>{style}</style></head><body>{''.join(parts)}</body></html>\n")

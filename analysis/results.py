@@ -29,6 +29,16 @@ def resolved_case(path):
         return json.loads(f.attrs["case_json"])
 
 
+def drying_summary(path):
+    """How the start and the drying went: the relaxation at rest, when steady state was reached
+    (NaN if drying hit its cap), and the run's warning ('' if none)."""
+    with open_result(path) as f:
+        a = f.attrs
+        return {"settle_iterations": int(a["settle_iterations"]), "settle_mass_ratio": float(a["settle_mass_ratio"]),
+                "drying_steady": bool(a["drying_steady"]), "drying_steady_time_us": float(a["drying_steady_time_s"]) * 1e6,
+                "warning": str(a["warning"])}
+
+
 def flatten(case):
     """{'cell': {'n_wall': 2067}} -> {'cell.n_wall': 2067}"""
     return {f"{section}.{key}": value for section, keys in case.items() if isinstance(keys, dict)

@@ -106,3 +106,13 @@ def test_curves_figure_draws_one_line_per_case_and_the_references(config, root):
     assert sum("reconstructed" in label for label in labels) == 2
     simulated = next(line for line in lines if line.get_label() == "X/X0 = 1")
     assert simulated.get_ydata()[-1] == pytest.approx(900 * 0.2)  # kPa
+
+
+def test_report_warns_of_every_case_whose_drying_hit_its_cap():
+    import pandas as pd
+    from analysis.report import warnings_box
+    summary = pd.DataFrame({"case": ["A", "B", "C"],
+                            "warning": ["", "drying reached drying.steps without a steady state", ""]})
+    box = warnings_box(summary)
+    assert "1 of 3 cases" in box and "<code>B</code>" in box and "<code>A</code>" not in box
+    assert warnings_box(summary.assign(warning="")) == ""

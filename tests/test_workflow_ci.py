@@ -20,9 +20,12 @@ def test_tables_hold_every_case_and_parameter(ci_run):
     summary = pd.read_csv(ci_run / "tables" / "summary.csv")
     assert len(summary) == 48
     for column in ["dryness", "turgor_kPa", "plate_speed_m_s", "G_MPa", "t0_um", "D_um", "cell.n_wall",
-                   "drying.dryness", "stress_kPa_at_0.05", "dried_V_over_V0", "peak_force_top_uN"]:
+                   "drying.dryness", "stress_kPa_at_0.05", "dried_V_over_V0", "peak_force_top_uN",
+                   "drying_steady", "drying_steady_time_us", "settle_iterations", "warning"]:
         assert column in summary.columns, column
     assert summary["stress_kPa_at_0.05"].notna().all()
+    # Every reduced cell reaches steady state before its cap (else the report warns).
+    assert summary["drying_steady"].all(), summary.loc[~summary["drying_steady"], ["case", "warning"]]
     series = pd.read_csv(ci_run / "tables" / "timeseries.csv", usecols=["case", "stage", "plate_stress_Pa"])
     assert set(series["case"]) == set(summary["case"])
     assert (series["stage"] == 1).any() and (series["stage"] == 0).any()

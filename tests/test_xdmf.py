@@ -9,6 +9,7 @@ import numpy as np
 def test_sidecars_read_with_meshio(cellsim, tmp_path):
     out = tmp_path / "run.h5"
     (tmp_path / "case.json").write_text('{"cell": {"n_wall": 642, "n_fluid": 500}, '
+                                        '"coupling": {"repulsion_f0_N_m": 1.5e-11}, '  # coarse cells: config/ci.yaml
                                         '"drying": {"steps": 0}, "compression": {"steps": 0}}')
     subprocess.run([cellsim, "run", str(tmp_path / "case.json"), "-o", str(out)], check=True)
 
