@@ -36,7 +36,12 @@ def drying_summary(path):
         a = f.attrs
         return {"settle_iterations": int(a["settle_iterations"]), "settle_mass_ratio": float(a["settle_mass_ratio"]),
                 "drying_steady": bool(a["drying_steady"]), "drying_steady_time_us": float(a["drying_steady_time_s"]) * 1e6,
-                "warning": str(a["warning"])}
+                "warning": text(a["warning"])}
+
+
+def text(attribute):
+    """A string attribute as str: the solver writes fixed-length strings, which h5py reads as bytes."""
+    return attribute.decode() if isinstance(attribute, bytes) else str(attribute)
 
 
 def flatten(case):

@@ -116,3 +116,16 @@ def test_report_warns_of_every_case_whose_drying_hit_its_cap():
     box = warnings_box(summary)
     assert "1 of 3 cases" in box and "<code>B</code>" in box and "<code>A</code>" not in box
     assert warnings_box(summary.assign(warning="")) == ""
+
+
+def test_drying_summary_reads_a_result_files_start_and_steady_state(cellsim, tmp_path):
+    from analysis.results import drying_summary
+    out = tmp_path / "run.h5"
+    (tmp_path / "case.json").write_text('{"cell": {"n_wall": 402, "n_fluid": 400}, '
+                                        '"coupling": {"repulsion_f0_N_m": 1.5e-11}, '  # coarse cells: config/ci.yaml
+                                        '"drying": {"steps": 300}, "compression": {"steps": 0}}')
+    subprocess.run([cellsim, "run", str(tmp_path / "case.json"), "-o", str(out), "--quiet"], check=True)
+    summary = drying_summary(out)
+    assert summary["settle_iterations"] > 0
+    assert summary["drying_steady"] is False and summary["drying_steady_time_us"] != summary["drying_steady_time_us"]
+    assert summary["warning"] == "drying reached drying.steps without a steady state"  # a str, not bytes
