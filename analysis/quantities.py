@@ -33,10 +33,21 @@ QUANTITIES = {
     "contact_stress_Pa": ("contact stress [kPa]", 1e-3),
 }
 
+# Derived by analysis/aggregate.py from the solver's series, for every run alike.
+DERIVED = {
+    # Drying ends at steady state, so compressions start at different times: curves against time in
+    # compression are drawn against the time since the plates started, as the paper draws them.
+    "stage_time_s": ("time in the stage [us]", 1e6),
+}
+
+
+def known(name):
+    return name in QUANTITIES or name in DERIVED
+
 
 def label(name):
-    return QUANTITIES[name][0]
+    return {**QUANTITIES, **DERIVED}[name][0]
 
 
 def scale(name):
-    return QUANTITIES[name][1]
+    return {**QUANTITIES, **DERIVED}[name][1]

@@ -56,9 +56,9 @@ def _colours(n):
 
 
 def _mark_compression_start(ax, data):
-    starts = data[data["stage"] == 1]["time_s"]
-    if len(starts):
-        ax.axvline(starts.min() * 1e6, color="grey", ls=":", lw=1)
+    """A dotted line where each case's compression began (drying ends at its own steady state)."""
+    for start in sorted(set(data[data["stage"] == 0].groupby("case")["time_s"].max())):
+        ax.axvline(start * 1e6, color="grey", ls=":", lw=1)
 
 
 def _draw_references(config, spec, ax, root):
