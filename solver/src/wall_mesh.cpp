@@ -12,13 +12,18 @@
 namespace cellsim {
 
 Eigen::Matrix3Xd fibonacci_sphere(int n, double radius) {
+  // The spiral's two poles carry its largest, least regular triangles, where the LJ barrier against
+  // the fluid is weakest (model.md §4). Its axis lies in the equatorial plane, 1 rad from x: away from
+  // the plates (which load the wall-fluid layer most) and from every row of the cubic fluid lattice
+  // (a row ending under a pole triangle put a fluid particle right over its centre, and it leaked).
+  const Eigen::Vector3d axis(std::cos(1.0), std::sin(1.0), 0.0), e1(0.0, 0.0, 1.0), e2 = axis.cross(e1);
   Eigen::Matrix3Xd x(3, n);
   const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < n; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / n;
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     const double phi = golden_angle * i;
-    x.col(i) << radius * r * std::cos(phi), radius * r * std::sin(phi), radius * z;
+    x.col(i) = radius * (r * std::cos(phi) * e1 + r * std::sin(phi) * e2 + z * axis);
   }
   return x;
 }
