@@ -140,7 +140,7 @@ std::vector<ParamSpec> build_specs() {
       integer("output.snapshot_every", &P::snapshot_every, 5000, 0, 1e9,
               "steps between particle snapshots (0: first and last state only)", "output"),
       real("output.progress_interval_s", "s", 1.0, &P::progress_interval_s, 5, 0, true, 1e6, true,
-           "wall-clock seconds between progress lines on stderr (0: every record)", "output"),
+           "wall-clock seconds between progress lines on stderr (0: every step)", "output"),
   };
 }
 

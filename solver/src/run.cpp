@@ -34,8 +34,11 @@ void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(con
     const bool last = n == steps || done(recorded);
     if (last && !recorded) take_record();
     if ((p.snapshot_every > 0 && n % p.snapshot_every == 0) || last) out.write_snapshot(sim.state(), sim.eos());
-    progress.update(sim.state().step, sim.state().time_s, name);
-    if (last) break;
+    progress.step(sim.state().time_s, name);
+    if (last) {
+      progress.unplan(steps - n);
+      break;
+    }
   }
 }
 
@@ -109,7 +112,7 @@ void run_case(Params p, const RunOptions& options) {
       sim.start_compression();
       run_stage(sim, p.compression_steps, strain_reached, out, records, progress, "compression");
     }
-    progress.finish(sim.state().step, sim.state().time_s);
+    progress.finish(sim.state().time_s);
   } catch (const NumericalFailure& e) {
     out.write_drying_summary(drying);
     out.write_snapshot(sim.state(), sim.eos());  // the failing state, for diagnosis
