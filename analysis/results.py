@@ -35,6 +35,7 @@ def drying_summary(path):
     with open_result(path) as f:
         a = f.attrs
         return {"settle_iterations": int(a["settle_iterations"]), "settle_mass_ratio": float(a["settle_mass_ratio"]),
+                "settle_volume_ratio": float(a["settle_volume_ratio"]),
                 "drying_steady": bool(a["drying_steady"]), "drying_steady_time_us": float(a["drying_steady_time_s"]) * 1e6,
                 "warning": text(a["warning"])}
 

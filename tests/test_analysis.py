@@ -89,8 +89,11 @@ def test_claims_compare_fresh_and_dried(config):
     rows = []
     for dryness, stiffness in [(1.0, 900.0), (0.1, 400.0)]:
         values = dict(base, dryness=dryness)
-        rows.append({**values, **aggregate.summarise(synthetic_series(stiffness, "x"))})
+        rows.append({**values, "settle_volume_ratio": 1.003 if dryness == 1.0 else 1.001,
+                     **aggregate.summarise(synthetic_series(stiffness, "x"))})
     verdicts = {r["claim"]: r for r in claims.evaluate(pd.DataFrame(rows), base)}
+    # The fresh cell's swelling is its inflation by the turgor at rest, not a change during drying.
+    assert verdicts["During drying the fresh cell swells slightly and dried cells shrink"]["value"] == 1.003
     stiffer = verdicts["Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1, 200 kPa)"]
     assert stiffer["value"] == pytest.approx(900 / 400) and stiffer["verdict"] == "agree"
     assert verdicts["G = 18 and 0.18 MPa give virtually overlapping curves"]["verdict"] == "not run"

@@ -62,6 +62,7 @@ void ResultFile::write_drying_summary(const DryingSummary& d) {
   h5::set_attr(root, "settle_residual", d.settle.residual);
   h5::set_attr(root, "settle_converged", std::int64_t{d.settle.converged});
   h5::set_attr(root, "settle_mass_ratio", d.settle.mass_ratio);
+  h5::set_attr(root, "settle_volume_ratio", d.settle.volume_ratio);
   h5::set_attr(root, "drying_steady", std::int64_t{d.steady});
   h5::set_attr(root, "drying_steady_time_s", d.steady_time_s);
   h5::set_attr(root, "warning", d.warning());

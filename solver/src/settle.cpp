@@ -5,6 +5,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "measures.hpp"
 #include "simulation.hpp"
 
 namespace cellsim {
@@ -29,6 +30,7 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
   auto& f = s.fluid;
   auto& w = s.wall;
   const double mass_before = f.m.sum();
+  const double volume_before = enclosed_volume(w.x, sim.mesh());
   if (max_iterations > 0) {
     const double rho0 = sim.params().fluid_density_kg_m3;
     const double dx = std::cbrt(f.m.mean() / rho0);  // particle spacing the masses imply
@@ -80,6 +82,7 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
     report.converged = report.residual <= tolerance;
   }
   report.mass_ratio = f.m.sum() / mass_before;
+  report.volume_ratio = enclosed_volume(w.x, sim.mesh()) / volume_before;
   sim.start_at_rest();
   try {
     sim.check_containment();

@@ -16,6 +16,7 @@ struct SettleReport {
   double residual = 0;        // largest fluid acceleration / (P_T0 / (rho0 dx)) at the end
   bool converged = false;     // residual <= settle.tolerance
   double mass_ratio = 1;      // fluid mass after / before (the masses the wall-pressure balance asks for)
+  double volume_ratio = 1;    // enclosed volume after / before: the fresh cell inflated by its turgor
 };
 
 // Relaxes sim's state in place (velocities zero at the end) and restarts its clock at t = 0.

@@ -58,6 +58,7 @@ SavedRun read_saved_run(const std::string& path) {
     d.settle.residual = h5::get_attr_double(file.id(), "settle_residual");
     d.settle.converged = h5::get_attr_int(file.id(), "settle_converged") != 0;
     d.settle.mass_ratio = h5::get_attr_double(file.id(), "settle_mass_ratio");
+    d.settle.volume_ratio = h5::get_attr_double(file.id(), "settle_volume_ratio");
     d.steady = h5::get_attr_int(file.id(), "drying_steady") != 0;
     d.steady_time_s = h5::get_attr_double(file.id(), "drying_steady_time_s");
     h5::Handle g = h5::open_group(file.id(), "state");
