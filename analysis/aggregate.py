@@ -21,12 +21,12 @@ def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
     return s[i - 1] + (s[i] - s[i - 1]) * (strain - e[i - 1]) / (e[i] - e[i - 1])
 
 
-def with_stage_time(ts):
-    """Adds stage_time_s: time since drying began (drying), since the plates started (compression;
-    compression starts at the last drying record, where drying ended)."""
+def with_compression_time(ts):
+    """Adds compression_time_s: time since the plates started, NaN in drying (compression starts at
+    the last drying record, where drying ended)."""
     drying = ts["stage"] == 0
     compression_start = ts.loc[drying, "time_s"].max() if drying.any() else ts["time_s"].min()
-    return ts.assign(stage_time_s=np.where(drying, ts["time_s"], ts["time_s"] - compression_start))
+    return ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - compression_start))
 
 
 def summarise(ts):
@@ -60,7 +60,7 @@ def tables(runs):
     """runs: [(Case, path of its result)] -> (timeseries table, summary table)."""
     series, summary = [], []
     for case, path in runs:
-        ts = with_stage_time(timeseries(path))
+        ts = with_compression_time(timeseries(path))
         params = {"case": case.name, "dried": case.dried, "studies": " ".join(case.studies), **case.values,
                   **flatten(resolved_case(path))}
         series.append(ts.assign(**{k: v for k, v in params.items()}))

@@ -37,7 +37,7 @@ QUANTITIES = {
 DERIVED = {
     # Drying ends at steady state, so compressions start at different times: curves against time in
     # compression are drawn against the time since the plates started, as the paper draws them.
-    "stage_time_s": ("time in the stage [us]", 1e6),
+    "compression_time_s": ("time in compression [us]", 1e6),
 }
 
 
