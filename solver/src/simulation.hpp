@@ -52,7 +52,6 @@ class Simulation {
   const Eigen::Matrix3Xd& fluid_force() const { return fluid_.force; }
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
   double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
-  double wall_spring_dt_limit_s() const { return wall_spring_dt_limit_s_; }
   void start_at_rest();
 
  private:
