@@ -77,8 +77,6 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
       f.x += step * f.v;
       w.x += step * w.v;
     }
-    f.rho.setConstant(rho0);
-    sim.refresh_rates();
     report.converged = report.residual <= tolerance;
   }
   report.mass_ratio = f.m.sum() / mass_before;
