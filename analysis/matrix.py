@@ -62,7 +62,7 @@ def check(config, root="."):
     for ref, spec in references.items():
         if not (pathlib.Path(root) / spec["file"]).is_file():
             raise ConfigError(f"references.{ref}.file: no such file '{spec['file']}'")
-    from analysis.quantities import DERIVED, QUANTITIES, known  # the solver's time series and derived ones
+    from analysis.quantities import DRAWABLE  # the solver's time series and those derived from them
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
         if spec["study"] not in studies:
@@ -79,8 +79,8 @@ def check(config, root="."):
             if axis not in axes:
                 raise ConfigError(f"{where}.lines: unknown axis '{axis}'; known: {sorted(axes)}")
         for q in [spec.get("x")] + spec.get("y", []):
-            if q is not None and not known(q):
-                raise ConfigError(f"{where}: unknown quantity '{q}'; known: {sorted({**QUANTITIES, **DERIVED})}")
+            if q is not None and q not in DRAWABLE:
+                raise ConfigError(f"{where}: unknown quantity '{q}'; known: {sorted(DRAWABLE)}")
         if spec["family"] == "curves" and not ("x" in spec and "y" in spec):
             raise ConfigError(f"{where}: a curves figure needs x and y")
         for ref in spec.get("references", []):

@@ -40,14 +40,12 @@ DERIVED = {
     "compression_time_s": ("time in compression [us]", 1e6),
 }
 
-
-def known(name):
-    return name in QUANTITIES or name in DERIVED
+DRAWABLE = {**QUANTITIES, **DERIVED}  # what a figure's x and y may name
 
 
 def label(name):
-    return {**QUANTITIES, **DERIVED}[name][0]
+    return DRAWABLE[name][0]
 
 
 def scale(name):
-    return {**QUANTITIES, **DERIVED}[name][1]
+    return DRAWABLE[name][1]

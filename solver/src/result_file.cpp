@@ -56,17 +56,7 @@ void ResultFile::write_header(const nlohmann::json& resolved_case, int threads) 
   snapshots_ = h5::create_group(root, "snapshots");
 }
 
-void ResultFile::write_drying_summary(const DryingSummary& d) {
-  const hid_t root = file_.id();
-  h5::set_attr(root, "settle_iterations", std::int64_t{d.settle.iterations});
-  h5::set_attr(root, "settle_residual", d.settle.residual);
-  h5::set_attr(root, "settle_converged", std::int64_t{d.settle.converged});
-  h5::set_attr(root, "settle_mass_ratio", d.settle.mass_ratio);
-  h5::set_attr(root, "settle_volume_ratio", d.settle.volume_ratio);
-  h5::set_attr(root, "drying_steady", std::int64_t{d.steady});
-  h5::set_attr(root, "drying_steady_time_s", d.steady_time_s);
-  h5::set_attr(root, "warning", d.warning());
-}
+void ResultFile::write_drying_summary(const DryingSummary& d) { cellsim::write_drying_summary(file_.id(), d); }
 
 void ResultFile::write_mesh(const WallMesh& mesh, long n_fluid) {
   h5::Handle g = h5::create_group(file_.id(), "mesh");

@@ -24,6 +24,17 @@ constexpr PlateField kPlateFields[] = {
 
 }  // namespace
 
+void write_drying_summary(hid_t parent, const DryingSummary& d) {  // read back in read_saved_run
+  h5::set_attr(parent, "settle_iterations", std::int64_t{d.settle.iterations});
+  h5::set_attr(parent, "settle_residual", d.settle.residual);
+  h5::set_attr(parent, "settle_converged", std::int64_t{d.settle.converged});
+  h5::set_attr(parent, "settle_mass_ratio", d.settle.mass_ratio);
+  h5::set_attr(parent, "settle_volume_ratio", d.settle.volume_ratio);
+  h5::set_attr(parent, "drying_steady", std::int64_t{d.steady});
+  h5::set_attr(parent, "drying_steady_time_s", d.steady_time_s);
+  h5::set_attr(parent, "warning", d.warning());
+}
+
 void write_state(hid_t parent, const State& s) {
   h5::Handle g = h5::create_group(parent, "state");
   h5::set_attr(g.id(), "time_s", s.time_s);
@@ -53,7 +64,7 @@ SavedRun read_saved_run(const std::string& path) {
     if (!h5::has_attr(file.id(), "completed") || h5::get_attr_int(file.id(), "completed") != 1)
       throw InputError("--from '" + path + "' is not a completed cellsim result (completed != 1)");
     run.case_json = h5::get_attr_string(file.id(), "case_json");
-    DryingSummary& d = run.drying;
+    DryingSummary& d = run.drying;  // as write_drying_summary wrote it
     d.settle.iterations = h5::get_attr_int(file.id(), "settle_iterations");
     d.settle.residual = h5::get_attr_double(file.id(), "settle_residual");
     d.settle.converged = h5::get_attr_int(file.id(), "settle_converged") != 0;

@@ -13,6 +13,9 @@ namespace cellsim {
 
 void write_state(hid_t parent, const State& s);
 
+// The drying summary as attributes of `parent` (settle_*, drying_steady, drying_steady_time_s, warning).
+void write_drying_summary(hid_t parent, const DryingSummary& d);
+
 struct SavedRun {
   State state;
   std::vector<Record> records;
