@@ -6,19 +6,6 @@
 
 namespace cellsim {
 
-void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out) {
-  const auto n = static_cast<Eigen::Index>(mesh.triangles.size());
-  out.N.resize(3, n);
-  out.inv_norm.resize(n);
-  for (Eigen::Index t = 0; t < n; ++t) {
-    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
-    const Eigen::Vector3d a = x.col(tri[0]);
-    out.N.col(t) = (x.col(tri[1]) - a).cross(x.col(tri[2]) - a);
-  }
-  out.norm = out.N.colwise().norm().transpose();  // packed square roots and divisions
-  out.inv_norm = out.norm.cwiseInverse();
-}
-
 Bending::Bending(const WallMesh& mesh, double bending_stiffness_J) : mesh_(mesh) {
   const auto& l0 = mesh.rest_length_m;
   const double mean_l0 = l0.empty() ? 1.0 : std::accumulate(l0.begin(), l0.end(), 0.0) / static_cast<double>(l0.size());

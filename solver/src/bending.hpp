@@ -6,17 +6,10 @@
 
 #include <Eigen/Core>
 
+#include "surface.hpp"  // the triangle normals, computed once a step
 #include "wall_mesh.hpp"
 
 namespace cellsim {
-
-// Per-triangle area normals N = (v - u) x (w - u), |N| (twice the area) and 1/|N|, shared by the
-// geometry measures and bending so they are computed once a step.
-struct TriangleNormals {
-  Eigen::Matrix3Xd N;
-  Eigen::VectorXd norm, inv_norm;
-};
-void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out);
 
 class Bending {
  public:

@@ -1,5 +1,7 @@
 #include "measures.hpp"
 
+#include "plates.hpp"
+
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -55,20 +57,8 @@ const std::vector<Quantity>& quantities() {
   return q;
 }
 
-double wall_area(const Eigen::Matrix3Xd& x, const WallMesh& mesh) {
-  double area = 0;
-  for (const auto& t : mesh.triangles)
-    area += 0.5 * (x.col(t[1]) - x.col(t[0])).cross(x.col(t[2]) - x.col(t[0])).norm();
-  return area;
-}
-
-double enclosed_volume(const Eigen::Matrix3Xd& x, const WallMesh& mesh) {
-  double six_v = 0;
-  for (const auto& t : mesh.triangles) six_v += x.col(t[0]).dot(x.col(t[1]).cross(x.col(t[2])));
-  return six_v / 6.0;
-}
-
-Record measure(const State& s, const WallMesh& mesh, const Params& p, const EquationOfState& eos) {
+Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
+               const EquationOfState& eos) {
   Record r{};
   const auto& f = s.fluid;
   const auto& w = s.wall;
@@ -81,9 +71,9 @@ Record measure(const State& s, const WallMesh& mesh, const Params& p, const Equa
   double pressure_sum = 0;
   for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
   r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;
-  r.area_m2 = wall_area(w.x, mesh);
-  r.volume_m3 = enclosed_volume(w.x, mesh);
-  r.equivalent_diameter_m = std::cbrt(6.0 * r.volume_m3 / M_PI);
+  r.area_m2 = surface.area_m2;
+  r.volume_m3 = surface.volume_m3;
+  r.equivalent_diameter_m = equivalent_diameter_m(r.volume_m3);
   r.smoothing_length_m = s.smoothing_length_m;
   r.cell_height_m = w.x.row(2).maxCoeff() - w.x.row(2).minCoeff();
   const Eigen::Vector3d centroid = w.x.rowwise().mean();
@@ -110,17 +100,13 @@ Record measure(const State& s, const WallMesh& mesh, const Params& p, const Equa
   r.plate_bottom_z_m = pl.bottom_z_m;
   r.plate_force_top_N = pl.force_top_N;
   r.plate_force_bottom_N = pl.force_bottom_N;
-  // Contact area: each wall particle within r_pw of a plate owns a third of its triangles' area.
-  Eigen::VectorXd vertex_area = Eigen::VectorXd::Zero(w.size());
-  for (const auto& t : mesh.triangles) {
-    const double a = 0.5 * (w.x.col(t[1]) - w.x.col(t[0])).cross(w.x.col(t[2]) - w.x.col(t[0])).norm();
-    for (int v : t) vertex_area[v] += a / 3.0;
-  }
+  // Contact area: the area owned by the wall particles that Eq 22 pushes (plates.hpp decides).
+  const Eigen::VectorXd vertex_area = surface.vertex_areas(mesh);
+  const PlateLaw law = plate_law(p);
   double contact_area = 0;
   int contacts = 0;
   for (Eigen::Index k = 0; k < w.size(); ++k) {
-    const double z = w.x(2, k);
-    if (pl.top_z_m - z < p.plate_range_m || z - pl.bottom_z_m < p.plate_range_m) {
+    if (plate_overlap(w.x.col(k), law, pl).touches()) {
       contact_area += vertex_area[k];
       ++contacts;
     }

@@ -7,6 +7,7 @@
 #include "eos.hpp"
 #include "params.hpp"
 #include "state.hpp"
+#include "surface.hpp"
 #include "wall_mesh.hpp"
 
 namespace cellsim {
@@ -31,11 +32,9 @@ struct Quantity {
 };
 const std::vector<Quantity>& quantities();
 
-// Closed-surface measures from outward triangles.
-double wall_area(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
-double enclosed_volume(const Eigen::Matrix3Xd& x, const WallMesh& mesh);  // signed tetrahedra
-
-Record measure(const State& s, const WallMesh& mesh, const Params& p, const EquationOfState& eos);
+// The record of state s; area, volume and normals come from its wall surface (surface.hpp).
+Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
+               const EquationOfState& eos);
 
 std::string output_reference_markdown();
 

@@ -4,6 +4,7 @@
 // plate is the plate force.
 #include <Eigen/Core>
 
+#include "params.hpp"
 #include "state.hpp"
 
 namespace cellsim {
@@ -14,6 +15,16 @@ struct PlateLaw {
   double length_m;       // footprint along x, centred on the plates' axis
   double width_m;        // footprint along y
 };
+
+PlateLaw plate_law(const Params& p);
+
+// Eq 22's contact rule, decided here and nowhere else: how far wall particle x reaches into the
+// range r_pw of each plate; 0 when it is out of range or outside the plate's footprint.
+struct PlateOverlap {
+  double top_m = 0, bottom_m = 0;
+  bool touches() const { return top_m > 0 || bottom_m > 0; }
+};
+PlateOverlap plate_overlap(const Eigen::Vector3d& x, const PlateLaw& law, const Plates& plates);
 
 // Adds the plate forces to wall_force and sets plates.force_top_N, force_bottom_N and contacts.
 void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force);

@@ -30,7 +30,7 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
   auto& f = s.fluid;
   auto& w = s.wall;
   const double mass_before = f.m.sum();
-  const double volume_before = enclosed_volume(w.x, sim.mesh());
+  const double volume_before = wall_surface(w.x, sim.mesh()).volume_m3;
   if (max_iterations > 0) {
     const double rho0 = sim.params().fluid_density_kg_m3;
     const double dx = std::cbrt(f.m.mean() / rho0);  // particle spacing the masses imply
@@ -80,7 +80,7 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
     report.converged = report.residual <= tolerance;
   }
   report.mass_ratio = f.m.sum() / mass_before;
-  report.volume_ratio = enclosed_volume(w.x, sim.mesh()) / volume_before;
+  report.volume_ratio = wall_surface(w.x, sim.mesh()).volume_m3 / volume_before;
   sim.start_at_rest();
   try {
     sim.check_containment();

@@ -47,7 +47,7 @@ Simulation::Simulation(const Params& p, const Cell& cell)
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
-      plate_law_{p.plate_range_m, p.plate_stiffness_N_m, p.plate_length_m, p.plate_width_m},
+      plate_law_(plate_law(p)),
       bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = cell.fluid_x;
@@ -68,7 +68,7 @@ Simulation::Simulation(const Params& p, const Cell& cell)
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
-  s_.reference_diameter_m = std::cbrt(6.0 * enclosed_volume(cell.wall_x, mesh_) / M_PI);
+  s_.reference_diameter_m = equivalent_diameter_m(wall_surface(cell.wall_x, mesh_).volume_m3);
   compute_rates();
 }
 
@@ -116,23 +116,18 @@ void Simulation::compute_rates() {
   timer_.lap(Phase::Plates);
 }
 
-// Triangle normals, wall area and volume, vertex normals, and the smoothing length of Eq 6:
-// h = (D / D0) h0.
+// The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0.
+// A wall that encloses no volume has collapsed or turned inside out: Eq 6 has no D, so the run stops
+// here (a non-finite volume comes from a non-finite position, which check_state names).
 void Simulation::update_geometry() {
-  const auto& x = s_.wall.x;
-  compute_triangle_normals(x, mesh_, triangle_normals_);
-  vertex_normal_.setZero(3, x.cols());
-  double six_volume = 0;
-  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
-    const auto& tri = mesh_.triangles[t];
-    const Eigen::Vector3d n = triangle_normals_.N.col(static_cast<Eigen::Index>(t));
-    six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
-    for (int v : tri) vertex_normal_.col(v) += n;
+  surface_.update(s_.wall.x, mesh_);
+  if (surface_.volume_m3 <= 0) {
+    std::ostringstream msg;
+    msg << where() << ": the wall encloses a volume of " << surface_.volume_m3
+        << " m^3 (it must be positive: the wall has collapsed or turned inside out)";
+    throw NumericalFailure(msg.str());
   }
-  wall_area_m2_ = 0.5 * triangle_normals_.norm.sum();
-  volume_m3_ = six_volume / 6.0;
-  const double diameter = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
-  s_.smoothing_length_m = diameter / s_.reference_diameter_m * *p_.h0_m;
+  s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
   lj_.cutoff_m = std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
 
@@ -152,7 +147,7 @@ void Simulation::mass_transfer() {
   const int n = static_cast<int>(f.size());
   const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    dm_dt_[i] = mass_rate(wall_area_m2_, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa);
+    dm_dt_[i] = mass_rate(surface_.area_m2, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa);
     fluid_.drho_dt[i] = density_rate(fluid_.drho_dt[i], f.rho[i], f.m[i], dm_dt_[i]);
   }
 }
@@ -161,9 +156,9 @@ void Simulation::mass_transfer() {
 void Simulation::wall_terms() {
   const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
   const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_, bond_scratch_);
-  s_.wall_tension_N_m = tension_length / (2.0 * wall_area_m2_);
+  s_.wall_tension_N_m = tension_length / (2.0 * surface_.area_m2);
   timer_.lap(Phase::WallBonds);
-  bending_.add_forces(s_.wall.x, triangle_normals_, wall_force_);
+  bending_.add_forces(s_.wall.x, surface_.triangles, wall_force_);
   timer_.lap(Phase::Bending);
 }
 
@@ -174,10 +169,10 @@ void Simulation::wall_fluid_terms() {
                     lj_pair_f_);
   wall_force_ += lj_on_wall_;
   // Each wall particle's LJ push along its unit normal (packed norms and divisions).
-  const double outward = (lj_on_wall_.cwiseProduct(vertex_normal_).colwise().sum().array() /
-                          vertex_normal_.colwise().norm().array())
+  const double outward = (lj_on_wall_.cwiseProduct(surface_.vertex_normal).colwise().sum().array() /
+                          surface_.vertex_normal.colwise().norm().array())
                              .sum();
-  s_.wall_pressure_Pa = outward / wall_area_m2_;
+  s_.wall_pressure_Pa = outward / surface_.area_m2;
 }
 
 // Eq 22 during compression; the first contact of the top plate starts the plate strain.
@@ -223,7 +218,7 @@ void Simulation::start_at_rest() {
   s_.time_s = 0;
   s_.step = s_.stage_step = 0;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
-  s_.reference_diameter_m = std::cbrt(6.0 * std::max(volume_m3_, 0.0) / M_PI);
+  s_.reference_diameter_m = equivalent_diameter_m(surface_.volume_m3);
   neighbours_.invalidate();
   compute_rates();
 }

@@ -16,6 +16,7 @@
 #include "plates.hpp"
 #include "cell.hpp"
 #include "state.hpp"
+#include "surface.hpp"
 #include "wall_bonds.hpp"
 #include "wall_mesh.hpp"
 
@@ -36,7 +37,7 @@ class Simulation {
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
-  Record record() const { return measure(s_, mesh_, p_, eos()); }
+  Record record() const { return measure(s_, mesh_, surface_, p_, eos()); }
   const PhaseTimer& timer() const { return timer_; }
   const NeighbourLists& neighbours() const { return neighbours_; }
   PhaseTimer& timer() { return timer_; }
@@ -85,9 +86,7 @@ class Simulation {
   Eigen::Matrix3Xd wall_force_, lj_on_wall_;
   Eigen::VectorXd dm_dt_;
   Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_;  // scratch, kept to avoid reallocation
-  TriangleNormals triangle_normals_;
-  Eigen::Matrix3Xd vertex_normal_;  // area-weighted outward normals of the wall
-  double wall_area_m2_ = 0, volume_m3_ = 0;
+  WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;
   PhaseTimer timer_;

@@ -30,8 +30,8 @@ void check_cell(double diameter_um, int n_wall, int n_fluid) {
   EXPECT_EQ(cell.fluid_x.cols(), n_fluid);
 
   // Triangulated sphere within 1 % of the exact area and volume.
-  EXPECT_NEAR(wall_area(cell.wall_x, cell.mesh) / (4 * M_PI * R * R), 1.0, 0.01);
-  EXPECT_NEAR(enclosed_volume(cell.wall_x, cell.mesh) / (4.0 / 3.0 * M_PI * R * R * R), 1.0, 0.01);
+  EXPECT_NEAR(wall_surface(cell.wall_x, cell.mesh).area_m2 / (4 * M_PI * R * R), 1.0, 0.01);
+  EXPECT_NEAR(wall_surface(cell.wall_x, cell.mesh).volume_m3 / (4.0 / 3.0 * M_PI * R * R * R), 1.0, 0.01);
 
   // Every triangle outward: its normal points away from the centre.
   for (const auto& t : cell.mesh.triangles) {

@@ -1,0 +1,34 @@
+#pragma once
+// The closed wall surface, measured once a step (model.md §1, §8): each triangle's area normal,
+// the wall area A_c (Eq 11), the enclosed volume and its equivalent diameter D (Eq 6), and the
+// vertex normals and areas. Every user (dynamics, bending, records, settle) reads these numbers.
+#include <Eigen/Core>
+
+#include "wall_mesh.hpp"
+
+namespace cellsim {
+
+// Per-triangle area normals N = (v - u) x (w - u), |N| (twice the area) and 1/|N|.
+struct TriangleNormals {
+  Eigen::Matrix3Xd N;
+  Eigen::VectorXd norm, inv_norm;
+};
+void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out);
+
+struct WallSurface {
+  TriangleNormals triangles;
+  Eigen::Matrix3Xd vertex_normal;  // sum of the adjacent triangles' area normals (outward)
+  double area_m2 = 0;              // sum of the triangles' areas
+  double volume_m3 = 0;            // sum of the signed tetrahedra (origin, triangle): > 0 when closed and outward
+
+  void update(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
+  // The area each wall particle owns: a third of each adjacent triangle's (the contact area, §8).
+  Eigen::VectorXd vertex_areas(const WallMesh& mesh) const;
+};
+
+WallSurface wall_surface(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
+
+// D of Eq 6: the diameter of the sphere of volume V (V > 0; Simulation stops the run otherwise).
+double equivalent_diameter_m(double volume_m3);
+
+}  // namespace cellsim
