@@ -102,3 +102,38 @@ def test_bad_workflow_config(root, tmp_path, name):
 def test_missing_workflow_config(root, tmp_path):
     done = run(["snakemake", "--nolock", "-n", "--cores", "2", "--configfile", str(tmp_path / "nope.yaml")], cwd=root)
     assert done.returncode != 0 and "nope.yaml" in done.stdout + done.stderr
+
+
+# A reduced cell that settles and runs (zero steps of drying and compression).
+TINY_CASE = ('{"cell": {"n_wall": 402, "n_fluid": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},'
+             ' "drying": {"steps": 0}, "compression": {"steps": 0}}')
+
+
+def test_file_system_refusal_says_what_hdf5_said(cellsim, tmp_path):
+    """A place the system will not let us create a file in: exit 4 (not bad input) and the reason."""
+    case = tmp_path / "case.json"
+    case.write_text(TINY_CASE)
+    done = run([cellsim, "run", str(case), "-o", "/proc/cellsim-out.h5", "--quiet"])
+    assert done.returncode == 4, done.stderr
+    assert "cannot create HDF5 file '/proc/cellsim-out.h5.partial'" in done.stderr, done.stderr
+    assert "No such file or directory" in done.stderr, done.stderr
+    assert done.stderr.count("\n") == 1, done.stderr
+
+
+def test_a_lock_hdf5_cannot_take_names_the_locking_switch(cellsim, tmp_path):
+    """Another process holds the file (HDF5 locks with flock, as on file systems without locking the
+    lock request fails): the message says so and names HDF5_USE_FILE_LOCKING=FALSE."""
+    h5py = pytest.importorskip("h5py")
+    case = tmp_path / "case.json"
+    case.write_text(TINY_CASE)
+    out = tmp_path / "out.h5"
+    with h5py.File(tmp_path / "out.h5.partial", "w"):  # held open for writing: locked
+        done = run([cellsim, "run", str(case), "-o", str(out), "--quiet"])
+    assert done.returncode == 4, done.stderr
+    assert "unable to lock" in done.stderr and "HDF5_USE_FILE_LOCKING=FALSE" in done.stderr, done.stderr
+    assert not out.exists()
+    assert run([cellsim, "run", str(case), "-o", str(out), "--quiet"]).returncode == 0
+    with h5py.File(out, "r+"):  # and a --from file another program is writing
+        done = run([cellsim, "run", str(case), "--from", str(out), "-o", str(tmp_path / "next.h5"), "--quiet"])
+    assert done.returncode == 4, done.stderr
+    assert "--from" in done.stderr and "HDF5_USE_FILE_LOCKING=FALSE" in done.stderr, done.stderr

@@ -1,5 +1,5 @@
 #pragma once
-// The two ways a run ends early, each with its exit code (see README "Exit codes").
+// The ways a run ends early, each with its exit code (see README "Exit codes").
 #include <stdexcept>
 #include <string>
 
@@ -15,7 +15,14 @@ struct NumericalFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The file system refused (permissions, a full disk, a lock HDF5 cannot take): the case is fine,
+// the place is not. Exit code 4; the message says what HDF5 and the system said.
+struct FileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 inline constexpr int kExitInputError = 2;
 inline constexpr int kExitNumericalFailure = 3;
+inline constexpr int kExitFileError = 4;
 
 }  // namespace cellsim

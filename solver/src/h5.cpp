@@ -1,17 +1,43 @@
 #include "h5.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
+
+#include "errors.hpp"
 
 namespace cellsim::h5 {
 namespace {
 
 hid_t check(hid_t id, const std::string& what) {
-  if (id < 0) throw std::runtime_error("HDF5: " + what + " failed");
+  if (id < 0) throw std::runtime_error("HDF5: " + what + " failed (" + last_error() + ")");
   return id;
 }
 
 void check(herr_t status, const std::string& what, int) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed (" + last_error() + ")");
+}
+
+int collect_message(unsigned, const H5E_error2_t* e, void* out) {
+  auto& text = *static_cast<std::string*>(out);
+  if (!e->desc || !*e->desc) return 0;
+  std::string line(e->desc);
+  for (char& c : line)
+    if (c == '\n') c = ' ';  // one line: some HDF5 descriptions carry a newline
+  text += (text.empty() ? "" : "; ") + line;
+  return 0;
+}
+
+// A FileError for a file HDF5 could not create or open: what HDF5 said, what the system said, and
+// the locking hint when HDF5 could not lock it (file systems such as some NFS mounts cannot).
+[[noreturn]] void file_error(const std::string& action, const std::string& path, int saved_errno) {
+  const std::string hdf5 = last_error();
+  std::string msg = "cannot " + action + " HDF5 file '" + path + "': " + (hdf5.empty() ? "HDF5 gave no reason" : hdf5);
+  if (saved_errno != 0) msg += " (system: " + std::string(std::strerror(saved_errno)) + ")";
+  if (hdf5.find("lock") != std::string::npos)
+    msg += "; another program may have the file open, or this file system cannot lock files: then run with "
+           "HDF5_USE_FILE_LOCKING=FALSE in the environment";
+  throw FileError(msg);
 }
 
 // Object-creation property lists with timestamps off (engineering.md: identical runs, identical files).
@@ -83,17 +109,28 @@ void Handle::close() {
   id_ = H5I_INVALID_HID;
 }
 
+std::string last_error() {
+  std::string text;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect_message, &text);
+  return text;
+}
+
 Handle create_file(const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
   Handle fcpl(check(H5Pcreate(H5P_FILE_CREATE), "H5Pcreate"), H5Pclose);
+  errno = 0;
   Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), H5Fclose);
-  if (file.id() < 0) throw std::runtime_error("cannot create HDF5 file '" + path + "'");
+  if (file.id() < 0) file_error("create", path, errno);
   // The root group is created with the file; later groups use untimed property lists.
   return file;
 }
 
 Handle open_file_readonly(const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (H5Fis_hdf5(path.c_str()) == 0) throw InputError("'" + path + "' is not an HDF5 file");  // content, not place
+  errno = 0;
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (file.id() < 0) throw std::runtime_error("cannot open HDF5 file '" + path + "'");
+  if (file.id() < 0) file_error("open", path, errno);
   return file;
 }
 

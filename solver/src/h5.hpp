@@ -29,8 +29,13 @@ class Handle {
   Closer close_ = nullptr;
 };
 
-Handle create_file(const std::string& path);    // truncates; throws std::runtime_error on failure
+// Both throw FileError with what HDF5 and the system said (and, for a lock HDF5 cannot take, the
+// HDF5_USE_FILE_LOCKING=FALSE hint); create_file truncates. A file that is not HDF5 at all is an
+// InputError.
+Handle create_file(const std::string& path);
 Handle open_file_readonly(const std::string& path);
+// HDF5's own account of the last failure on this thread: its error stack, outermost first.
+std::string last_error();
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& path);

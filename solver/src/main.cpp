@@ -146,6 +146,9 @@ int main(int argc, char** argv) {
   } catch (const cellsim::NumericalFailure& e) {
     std::cerr << "cellsim: numerical failure: " << e.what() << "\n";
     return cellsim::kExitNumericalFailure;
+  } catch (const cellsim::FileError& e) {
+    std::cerr << "cellsim: file error: " << e.what() << "\n";
+    return cellsim::kExitFileError;
   } catch (const std::exception& e) {
     std::cerr << "cellsim: internal error: " << e.what() << "\n";
     return 1;

@@ -1,6 +1,8 @@
 #include "result_file.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -14,14 +16,24 @@
 namespace cellsim {
 namespace {
 
+// Renames, saying what the system said when it cannot.
+void rename_or_throw(const std::string& from, const std::string& to) {
+  std::error_code error;
+  std::filesystem::rename(from, to, error);
+  if (error) throw FileError("cannot rename '" + from + "' to '" + to + "': " + error.message());
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".partial";
   {
+    errno = 0;
     std::ofstream out(tmp, std::ios::binary);
     out << text;
-    if (!out) throw std::runtime_error("cannot write '" + tmp + "'");
+    out.flush();
+    if (!out)
+      throw FileError("cannot write '" + tmp + "'" + (errno ? std::string(": ") + std::strerror(errno) : std::string()));
   }
-  std::filesystem::rename(tmp, path);
+  rename_or_throw(tmp, path);
 }
 
 }  // namespace
@@ -33,11 +45,10 @@ ResultFile::ResultFile(const std::string& final_path)
     throw InputError("output '" + final_path + "': directory '" + dir.string() + "' does not exist");
   if (std::filesystem::is_directory(final_path))
     throw InputError("output '" + final_path + "' is a directory; give a file name such as run.h5");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
   try {
     file_ = h5::create_file(partial_path_);
-  } catch (const std::exception&) {
-    throw InputError("output '" + final_path + "': cannot create '" + partial_path_ + "' (not writable?)");
+  } catch (const FileError& e) {
+    throw FileError("output '" + final_path + "': " + e.what());
   }
   h5::set_attr(file_.id(), "completed", std::int64_t{0});
 }
@@ -124,7 +135,7 @@ void ResultFile::complete(const std::vector<Record>& records, const State& final
   h5::set_attr(file_.id(), "completed", std::int64_t{1});  // last: the file is whole
   snapshots_.close();
   file_.close();
-  std::filesystem::rename(partial_path_, final_path_);
+  rename_or_throw(partial_path_, final_path_);
   const std::string h5_name = std::filesystem::path(final_path_).filename().string();
   const std::string stem = final_path_.substr(0, final_path_.size() - std::filesystem::path(final_path_).extension().string().size());
   write_text_file(stem + ".wall.xdmf", xdmf_text("wall", h5_name, snapshot_list_, n_wall_, n_triangles_));

@@ -101,6 +101,8 @@ SavedRun read_saved_run(const std::string& path) {
     }
   } catch (const InputError&) {
     throw;
+  } catch (const FileError& e) {
+    throw FileError(std::string("--from: ") + e.what());
   } catch (const std::exception& e) {
     throw InputError("--from '" + path + "' cannot be read as a cellsim result: " + e.what());
   }
