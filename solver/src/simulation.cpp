@@ -8,6 +8,7 @@
 #include "errors.hpp"
 #include "mass_transfer.hpp"
 #include "plates.hpp"
+#include "pressure_closure.hpp"
 #include "threads.hpp"
 #include "wall_fluid.hpp"
 #include "wall_terms.hpp"
@@ -200,16 +201,11 @@ void Simulation::drift(double dt) {
   if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
 }
 
-// The volume closure (docs/model-closures.md): during drying, nudge every fluid mass (density
-// unchanged, so the particle volume m/rho changes) until the pressure the wall carries equals
-// the mean fluid pressure; relaxation time tau.
+// The wall-pressure closure (pressure_closure.hpp): during drying only.
 void Simulation::apply_pressure_closure() {
-  const double tau = p_.pressure_closure_time_s;
-  if (tau <= 0) return;
-  const double mean_pressure = fluid_.pressure.mean();
-  if (!(mean_pressure > 0) || !(s_.wall_pressure_Pa > 0)) return;  // no turgor to match
-  const double ratio = std::clamp(s_.wall_pressure_Pa / mean_pressure, 0.5, 2.0);
-  s_.fluid.m *= std::pow(ratio, -p_.dt_s / (2.0 * tau));
+  const double factor =
+      pressure_closure_factor(s_.wall_pressure_Pa, fluid_.pressure.mean(), p_.dt_s, p_.pressure_closure_time_s);
+  if (factor != 1.0) s_.fluid.m *= factor;
 }
 
 void Simulation::start_at_rest() {

@@ -4,8 +4,6 @@
 // Both forces are a scalar times grad_i W_ij = g x_ij (g = (1/r) dW/dr), or times g v_ij, so the
 // pair loop computes the two scalar coefficients and adds coefficient x vector once. The
 // coefficient functions take one pair (double) or four (simd::double4, the pair loop's lanes).
-#include <Eigen/Core>
-
 namespace cellsim::sph {
 
 // Pressure force, Eq 3 (symmetric form): F_ij = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) grad_i W_ij;
@@ -21,16 +19,6 @@ T pressure_coefficient(T mi, T mj, T Pi_over_rho2, T Pj_over_rho2) {
 template <class T>
 T viscous_coefficient(T mu_sum, T Vi, T Vj) {
   return mu_sum * Vi * Vj;
-}
-
-inline Eigen::Vector3d pressure_force(double mi, double mj, double Pi_over_rho2, double Pj_over_rho2,
-                                      double dW_dr_over_r, const Eigen::Vector3d& xij) {
-  return pressure_coefficient(mi, mj, Pi_over_rho2, Pj_over_rho2) * dW_dr_over_r * xij;
-}
-
-inline Eigen::Vector3d viscous_force(double mu_sum, double Vi, double Vj, double dW_dr_over_r,
-                                     const Eigen::Vector3d& vij) {
-  return viscous_coefficient(mu_sum, Vi, Vj) * dW_dr_over_r * vij;
 }
 
 // Continuity, Eq 10: the contribution of j to d(rho_i)/dt is m_j v_ij . grad_i W_ij

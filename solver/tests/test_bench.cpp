@@ -14,7 +14,7 @@ using cellsim::testing::ScratchDir;
 TEST(Bench, PrintsTheMedianStepAndEveryPhaseThatAddUpToIt) {
   ScratchDir dir("bench");
   const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "output": {"record_every": 50}})");
-  const auto r = run_cli("bench " + c + " --steps 300 --repeats 3", dir);
+  const auto r = run_cli({"bench", c, "--steps", "300", "--repeats", "3"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(median ([\d.]+) ms/step .*, ([\d.]+) million particle-steps/s)")))

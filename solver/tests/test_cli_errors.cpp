@@ -13,7 +13,7 @@ namespace {
 
 const char* kTinyCase = R"({"cell": {"n_wall": 162, "n_fluid": 100}, "drying": {"steps": 0}, "compression": {"steps": 0}})";
 
-void expect_input_error(const std::string& args, const ScratchDir& dir, const std::vector<std::string>& mentions) {
+void expect_input_error(const cellsim::testing::Args& args, const ScratchDir& dir, const std::vector<std::string>& mentions) {
   const auto r = run_cli(args, dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   for (const auto& m : mentions) EXPECT_NE(r.err.find(m), std::string::npos) << "stderr lacks '" << m << "': " << r.err;
@@ -26,68 +26,68 @@ void expect_input_error(const std::string& args, const ScratchDir& dir, const st
 TEST(CliErrors, MalformedJson) {
   ScratchDir dir("malformed");
   const auto c = dir.write("case.json", R"({"cell": {"n_wall": 162,}})");
-  expect_input_error("run " + c + " -o " + dir.file("out.h5"), dir, {"not valid JSON", "case.json"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"not valid JSON", "case.json"});
 }
 
 TEST(CliErrors, UnknownKeySuggestsNearest) {
   ScratchDir dir("unknown");
   const auto c = dir.write("case.json", R"({"wall": {"G_Mpa": 18}})");
-  expect_input_error("run " + c + " -o " + dir.file("out.h5"), dir, {"unknown key 'wall.G_Mpa'", "wall.G_MPa"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"unknown key 'wall.G_Mpa'", "wall.G_MPa"});
 }
 
 TEST(CliErrors, UnknownSectionSuggestsNearest) {
   ScratchDir dir("section");
   const auto c = dir.write("case.json", R"({"dryng": {"dryness": 0.5}})");
-  expect_input_error("validate " + c, dir, {"unknown key 'dryng.dryness'", "drying.dryness"});
+  expect_input_error({"validate", c}, dir, {"unknown key 'dryng.dryness'", "drying.dryness"});
 }
 
 TEST(CliErrors, WrongType) {
   ScratchDir dir("type");
   const auto c = dir.write("case.json", R"({"cell": {"turgor_kPa": "200"}})");
-  expect_input_error("run " + c + " -o " + dir.file("out.h5"), dir, {"cell.turgor_kPa", "\"200\"", "expected a number"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"cell.turgor_kPa", "\"200\"", "expected a number"});
 }
 
 TEST(CliErrors, NonIntegerCount) {
   ScratchDir dir("integer");
   const auto c = dir.write("case.json", R"({"cell": {"n_wall": 2067.5}})");
-  expect_input_error("validate " + c, dir, {"cell.n_wall", "2067.5", "integer"});
+  expect_input_error({"validate", c}, dir, {"cell.n_wall", "2067.5", "integer"});
 }
 
 TEST(CliErrors, NonFiniteValueInFile) {
   ScratchDir dir("nonfinite");
   const auto c = dir.write("case.json", R"({"wall": {"G_MPa": 1e999}})");
-  expect_input_error("run " + c + " -o " + dir.file("out.h5"), dir, {"wall.G_MPa", "finite"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"wall.G_MPa", "finite"});
 }
 
 TEST(CliErrors, NonFiniteValueInOverride) {
   ScratchDir dir("nonfinite-set");
   const auto c = dir.write("case.json", kTinyCase);
-  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --set drying.dryness=nan", dir,
+  expect_input_error({"run", c, "-o", dir.file("out.h5"), "--set", "drying.dryness=nan"}, dir,
                      {"drying.dryness", "nan", "finite"});
 }
 
 TEST(CliErrors, OutOfRange) {
   ScratchDir dir("range");
   const auto c = dir.write("case.json", kTinyCase);
-  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --set drying.dryness=1.5", dir,
+  expect_input_error({"run", c, "-o", dir.file("out.h5"), "--set", "drying.dryness=1.5"}, dir,
                      {"drying.dryness = 1.5", "0 < value <= 1"});
 }
 
 TEST(CliErrors, OverrideOfUnknownKey) {
   ScratchDir dir("set-unknown");
   const auto c = dir.write("case.json", kTinyCase);
-  expect_input_error("validate " + c + " --set drying.drynes=0.5", dir, {"drying.drynes", "drying.dryness"});
+  expect_input_error({"validate", c, "--set", "drying.drynes=0.5"}, dir, {"drying.drynes", "drying.dryness"});
 }
 
 TEST(CliErrors, MissingCaseFile) {
   ScratchDir dir("missing");
-  expect_input_error("run " + dir.file("nope.json") + " -o " + dir.file("out.h5"), dir, {"nope.json", "cannot open"});
+  expect_input_error({"run", dir.file("nope.json"), "-o", dir.file("out.h5")}, dir, {"nope.json", "cannot open"});
 }
 
 TEST(CliErrors, UnwritableOutput) {
   ScratchDir dir("unwritable");
   const auto c = dir.write("case.json", kTinyCase);
-  const auto r = run_cli("run " + c + " -o " + dir.file("no/such/dir/out.h5"), dir);
+  const auto r = run_cli({"run", c, "-o", dir.file("no/such/dir/out.h5")}, dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("no/such/dir"), std::string::npos) << r.err;
 }
@@ -95,30 +95,30 @@ TEST(CliErrors, UnwritableOutput) {
 TEST(CliErrors, ImpossibleGeometry) {
   ScratchDir dir("geometry");
   const auto c = dir.write("case.json", R"({"cell": {"fill_gap_um": 80}})");
-  expect_input_error("run " + c + " -o " + dir.file("out.h5"), dir, {"cell.fill_gap_um", "radius"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"cell.fill_gap_um", "radius"});
 }
 
 TEST(CliErrors, UsageErrors) {
   ScratchDir dir("usage");
-  EXPECT_EQ(run_cli("", dir).exit_code, 2);
-  EXPECT_EQ(run_cli("frobnicate", dir).exit_code, 2);
+  EXPECT_EQ(run_cli({}, dir).exit_code, 2);
+  EXPECT_EQ(run_cli({"frobnicate"}, dir).exit_code, 2);
   const auto c = dir.write("case.json", kTinyCase);
-  const auto r = run_cli("run " + c, dir);
+  const auto r = run_cli({"run", c}, dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("-o OUT.h5"), std::string::npos) << r.err;
 }
 
 TEST(Cli, HelpAndVersionSucceed) {
   ScratchDir dir("help");
-  EXPECT_EQ(run_cli("--help", dir).exit_code, 0);
-  EXPECT_EQ(run_cli("--version", dir).exit_code, 0);
+  EXPECT_EQ(run_cli({"--help"}, dir).exit_code, 0);
+  EXPECT_EQ(run_cli({"--version"}, dir).exit_code, 0);
 }
 
 TEST(CliErrors, ThreadCountOutOfRange) {
   ScratchDir dir("threads");
   const auto c = dir.write("case.json", kTinyCase);
-  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads 0", dir, {"--threads", "positive integer"});
-  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads 100000", dir,
+  expect_input_error({"run", c, "-o", dir.file("out.h5"), "--threads", "0"}, dir, {"--threads", "positive integer"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5"), "--threads", "100000"}, dir,
                      {"--threads = 100000", "between 1 and"});
-  expect_input_error("run " + c + " -o " + dir.file("out.h5") + " --threads two", dir, {"--threads", "'two'"});
+  expect_input_error({"run", c, "-o", dir.file("out.h5"), "--threads", "two"}, dir, {"--threads", "'two'"});
 }

@@ -40,7 +40,7 @@ Series read_series(const std::string& path) {
 TEST(Compression, StrainGrowsMonotonicallyWithPlateTravelAfterContact) {
   ScratchDir dir("compression");
   const auto c = dir.write("case.json", kSmallFreshCase);
-  const auto r = run_cli("run " + c + " -o " + dir.file("out.h5") + " --quiet", dir);
+  const auto r = run_cli({"run", c, "-o", dir.file("out.h5"), "--quiet"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Series s = read_series(dir.file("out.h5"));
   int after_contact = 0;
@@ -66,8 +66,7 @@ TEST(Compression, StrainGrowsMonotonicallyWithPlateTravelAfterContact) {
 TEST(Compression, StopsAtEndStrain) {
   ScratchDir dir("end-strain");
   const auto c = dir.write("case.json", kSmallFreshCase);
-  const auto r = run_cli("run " + c + " -o " + dir.file("out.h5") +
-                             " --set compression.end_strain=0.02 --set compression.plate_speed_m_s=5 --quiet",
+  const auto r = run_cli({"run", c, "-o", dir.file("out.h5"), "--set", "compression.end_strain=0.02", "--set", "compression.plate_speed_m_s=5", "--quiet"},
                          dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Series s = read_series(dir.file("out.h5"));

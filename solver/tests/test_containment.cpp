@@ -20,4 +20,15 @@ TEST(Containment, FindsTheParticleOutsideTheWall) {
   EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3);
   fluid.col(3) << 0, 0, -49e-6;  // near the bottom pole, inside
   EXPECT_EQ(first_particle_outside(fluid, wall, mesh), -1);
+  // Inside the wall's bounding box but outside the wall: only the ray parity can tell. The flat
+  // triangles lie within the sphere, so 0.3 um beyond R is outside and 1 um within is inside.
+  const Eigen::Vector3d diagonal = Eigen::Vector3d(1, 1, 1).normalized();
+  for (const Eigen::Vector3d& dir : {diagonal, Eigen::Vector3d(-0.6, 0.48, -0.64), Eigen::Vector3d(0.8, -0.6, 0.0)}) {
+    fluid.col(3) = 50.3e-6 * dir;
+    EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3) << dir.transpose();
+    fluid.col(3) = 49e-6 * dir;
+    EXPECT_EQ(first_particle_outside(fluid, wall, mesh), -1) << dir.transpose();
+  }
+  fluid.col(3) << 35e-6, 35e-6, 35e-6;  // a corner of the bounding box, far outside the sphere
+  EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3);
 }

@@ -35,11 +35,11 @@ std::vector<double> dataset(const std::string& file, const std::string& name) {
 TEST(Continue, FromDriedStateIsBitIdenticalToOneRun) {
   ScratchDir dir("continue");
   const auto c = dir.write("case.json", kSmallCase);
-  auto r = run_cli("run " + c + " -o " + dir.file("whole.h5") + " --quiet", dir);
+  auto r = run_cli({"run", c, "-o", dir.file("whole.h5"), "--quiet"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_cli("run " + c + " -o " + dir.file("dried.h5") + " --set compression.steps=0 --quiet", dir);
+  r = run_cli({"run", c, "-o", dir.file("dried.h5"), "--set", "compression.steps=0", "--quiet"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run_cli("run " + c + " --from " + dir.file("dried.h5") + " -o " + dir.file("continued.h5") + " --quiet", dir);
+  r = run_cli({"run", c, "--from", dir.file("dried.h5"), "-o", dir.file("continued.h5"), "--quiet"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
 
   for (const char* name : {"timeseries/time_s", "timeseries/plate_force_top_N", "timeseries/nominal_strain",
@@ -62,23 +62,21 @@ TEST(Continue, FromDriedStateIsBitIdenticalToOneRun) {
 TEST(Continue, RefusesAStateDriedWithOtherParameters) {
   ScratchDir dir("continue-mismatch");
   const auto c = dir.write("case.json", kSmallCase);
-  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("dried.h5") + " --set compression.steps=0 --set drying.steps=200 --quiet", dir)
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("dried.h5"), "--set", "compression.steps=0", "--set", "drying.steps=200", "--quiet"}, dir)
                 .exit_code,
             0);
-  auto r = run_cli("run " + c + " --from " + dir.file("dried.h5") + " -o " + dir.file("out.h5") +
-                       " --set drying.steps=200 --set drying.dryness=0.9",
+  auto r = run_cli({"run", c, "--from", dir.file("dried.h5"), "-o", dir.file("out.h5"), "--set", "drying.steps=200", "--set", "drying.dryness=0.9"},
                    dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("drying.dryness"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
   // Plate settings may differ: that is the point of continuing.
-  r = run_cli("run " + c + " --from " + dir.file("dried.h5") + " -o " + dir.file("out.h5") +
-                  " --set drying.steps=200 --set compression.plate_speed_m_s=5 --set compression.steps=10 --quiet",
+  r = run_cli({"run", c, "--from", dir.file("dried.h5"), "-o", dir.file("out.h5"), "--set", "drying.steps=200", "--set", "compression.plate_speed_m_s=5", "--set", "compression.steps=10", "--quiet"},
               dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   // A file that is not a result is refused with a message naming it.
   const auto junk = dir.write("junk.h5", "not hdf5");
-  r = run_cli("run " + c + " --from " + junk + " -o " + dir.file("out2.h5"), dir);
+  r = run_cli({"run", c, "--from", junk, "-o", dir.file("out2.h5")}, dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("junk.h5"), std::string::npos) << r.err;
 }

@@ -1,6 +1,8 @@
 // Cubic spline kernel, Eq 5 as corrected in model.md §2: moments on a fine lattice.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "kernel.hpp"
@@ -39,19 +41,35 @@ TEST(Kernel, FirstMomentsVanishAndSecondIsMinusOne) {
   EXPECT_NEAR(lattice_sum(h, [&](const Eigen::Vector3d& x) { return x.z() * grad(x).z(); }), -1.0, 1e-3);
 }
 
-TEST(Kernel, GradientIsOddAndMatchesDerivative) {
+TEST(Kernel, ValuesAtTheCentreAndContinuityAtTheBranches) {
+  // W(0) = 3/(2 pi h^3) * 2/3 = 1/(pi h^3); both branches give 1/6 at s = 1 and 0 at s = 2.
+  const double h = 1.5, norm = 3.0 / (2.0 * M_PI * h * h * h);
+  const CubicSplineKernel W(h);
+  EXPECT_NEAR(W.W(0.0), 1.0 / (M_PI * h * h * h), 1e-15);
+  EXPECT_NEAR(W.W(h * (1 - 1e-12)), norm / 6.0, 1e-12);
+  EXPECT_NEAR(W.W(h * (1 + 1e-12)), norm / 6.0, 1e-12);
+  EXPECT_NEAR(W.W(2 * h * (1 - 1e-9)), 0.0, 1e-12);
+  EXPECT_NEAR(W.dW_dr(h * (1 - 1e-12)), W.dW_dr(h * (1 + 1e-12)), 1e-10);  // C1 at s = 1
+}
+
+TEST(Kernel, GradientIsTheFiniteDifferenceGradientOfW) {
+  // grad_i W_ij = (1/r dW/dr) x_ij, compared component by component with central differences of
+  // W(|x|) in 3-D: catches a wrong 1/r, sign or branch in the gradient the pair loop uses.
   const CubicSplineKernel W(1.5);
-  for (double r : {0.1, 0.7, 1.4, 1.5, 2.2, 2.9}) {
+  for (double r : {0.1, 0.7, 1.4, 1.6, 2.2, 2.9}) {
     const Eigen::Vector3d x = r * Eigen::Vector3d(0.48, -0.6, 0.64);
-    const Eigen::Vector3d g_plus = W.dW_dr_over_r(x.norm()) * x, g_minus = W.dW_dr_over_r(x.norm()) * (-x);
-    EXPECT_TRUE((g_plus + g_minus).isZero(0.0)) << r;
+    const Eigen::Vector3d grad = W.dW_dr_over_r(x.norm()) * x;
     const double eps = 1e-6;
+    for (int d = 0; d < 3; ++d) {
+      const Eigen::Vector3d e = eps * Eigen::Vector3d::Unit(d);
+      const double fd = (W.W((x + e).norm()) - W.W((x - e).norm())) / (2 * eps);
+      EXPECT_NEAR(grad[d], fd, 1e-7) << "r " << r << " component " << d;
+    }
     EXPECT_NEAR(W.dW_dr(r), (W.W(r + eps) - W.W(r - eps)) / (2 * eps), 1e-6) << r;
-    EXPECT_NEAR(W.dW_dr_over_r(r) * r, W.dW_dr(r), 1e-12) << r;
+    EXPECT_LT(W.dW_dr(r), 0.0) << r;  // W decreases monotonically inside its support
   }
   EXPECT_EQ(W.W(3.0), 0.0);
   EXPECT_EQ(W.dW_dr(3.0), 0.0);
-  EXPECT_LE(W.dW_dr(1.0), 0.0);
 }
 
 TEST(Kernel, FourLanesGiveTheGradientOfEachDistance) {

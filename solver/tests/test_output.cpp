@@ -30,7 +30,7 @@ std::string bytes(const std::string& path) {
 TEST(Output, ZeroStepRunWritesCompleteFileWithGeometryAndMeasures) {
   ScratchDir dir("output");
   const auto c = dir.write("case.json", kZeroStepCase);
-  const auto r = run_cli("run " + c + " -o " + dir.file("out.h5"), dir);
+  const auto r = run_cli({"run", c, "-o", dir.file("out.h5")}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_TRUE(std::filesystem::exists(dir.file("out.h5")));
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5.partial")));
@@ -66,10 +66,21 @@ TEST(Output, ZeroStepRunWritesCompleteFileWithGeometryAndMeasures) {
 }
 
 TEST(Output, SameCaseTwiceGivesIdenticalFiles) {
+  // A run that settles, dries, compresses and writes snapshots: every part of the file is exercised.
   ScratchDir dir("determinism");
-  const auto c = dir.write("case.json", kZeroStepCase);
-  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("a.h5"), dir).exit_code, 0);
-  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("b.h5"), dir).exit_code, 0);
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},
+                                            "drying": {"steps": 300}, "compression": {"steps": 300, "plate_speed_m_s": 5},
+                                            "output": {"record_every": 50, "snapshot_every": 100}})");
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("a.h5"), "--quiet"}, dir).exit_code, 0);
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("b.h5"), "--quiet"}, dir).exit_code, 0);
+  {
+    h5::Handle f = h5::open_file_readonly(dir.file("a.h5"));
+    const auto step = h5::read_doubles(f.id(), "timeseries/step"), stage = h5::read_doubles(f.id(), "timeseries/stage");
+    EXPECT_EQ(step.back(), 600.0);  // both stages ran all their steps
+    EXPECT_EQ(stage.back(), 1.0);
+    EXPECT_GT(h5::get_attr_int(f.id(), "settle_iterations"), 0);
+    EXPECT_TRUE(h5::exists(f.id(), "snapshots/000000500"));  // in compression
+  }
   const std::string a = bytes(dir.file("a.h5")), b = bytes(dir.file("b.h5"));
   ASSERT_FALSE(a.empty());
   EXPECT_TRUE(a == b) << "HDF5 files differ: timestamps or uninitialised data?";
@@ -78,7 +89,7 @@ TEST(Output, SameCaseTwiceGivesIdenticalFiles) {
 TEST(Output, OverridesAreValidatedAndRecorded) {
   ScratchDir dir("override");
   const auto c = dir.write("case.json", kZeroStepCase);
-  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("out.h5") + " --set drying.dryness=0.5 --set wall.G_MPa=0.18", dir)
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("out.h5"), "--set", "drying.dryness=0.5", "--set", "wall.G_MPa=0.18"}, dir)
                 .exit_code,
             0);
   h5::Handle f = h5::open_file_readonly(dir.file("out.h5"));
@@ -93,8 +104,8 @@ TEST(Output, TwoThreadsTwiceGiveIdenticalFilesThatAgreeWithOneThreadToRoundOff) 
   const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "drying": {"steps": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},
                                             "compression": {"steps": 0}, "output": {"record_every": 100}})");
   for (const char* name : {"two_a.h5", "two_b.h5"})
-    ASSERT_EQ(run_cli("run " + c + " -o " + dir.file(name) + " --threads 2 --quiet", dir).exit_code, 0);
-  ASSERT_EQ(run_cli("run " + c + " -o " + dir.file("one.h5") + " --quiet", dir).exit_code, 0);
+    ASSERT_EQ(run_cli({"run", c, "-o", dir.file(name), "--threads", "2", "--quiet"}, dir).exit_code, 0);
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("one.h5"), "--quiet"}, dir).exit_code, 0);
   EXPECT_TRUE(bytes(dir.file("two_a.h5")) == bytes(dir.file("two_b.h5")));
   h5::Handle two = h5::open_file_readonly(dir.file("two_a.h5")), one = h5::open_file_readonly(dir.file("one.h5"));
   EXPECT_EQ(h5::get_attr_int(two.id(), "threads"), 2);

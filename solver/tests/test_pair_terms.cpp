@@ -2,26 +2,66 @@
 // mass transfer direction (Eq 11).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "drying.hpp"
+#include "eos.hpp"
+#include "fluid_pairs.hpp"
+#include "kernel.hpp"
 #include "lennard_jones.hpp"
+#include "neighbours.hpp"
 #include "mass_transfer.hpp"
-#include "sph_terms.hpp"
 #include "wall_terms.hpp"
 
 using namespace cellsim;
 
-TEST(PairTerms, PressureAndViscousForcesAreEqualAndOpposite) {
-  const double mi = 5.7e-13, mj = 6.1e-13, rhoi = 1001, rhoj = 998, Pi = 2.1e5, Pj = 1.9e5;
-  const Eigen::Vector3d xij(3e-6, -1e-6, 2e-6), vij(0.2, 0.1, -0.3);
-  const double g = -1.7e20;  // (1/r) dW/dr at |xij|: symmetric in i and j
-  const Eigen::Vector3d p_ij = sph::pressure_force(mi, mj, Pi / (rhoi * rhoi), Pj / (rhoj * rhoj), g, xij);
-  const Eigen::Vector3d p_ji = sph::pressure_force(mj, mi, Pj / (rhoj * rhoj), Pi / (rhoi * rhoi), g, -xij);
-  EXPECT_TRUE((p_ij + p_ji).isZero(1e-12 * p_ij.norm()));
-  EXPECT_GT(p_ij.dot(xij), 0.0);  // positive pressure pushes the pair apart
-  const Eigen::Vector3d v_ij = sph::viscous_force(0.2, mi / rhoi, mj / rhoj, g, vij);
-  const Eigen::Vector3d v_ji = sph::viscous_force(0.2, mj / rhoj, mi / rhoi, g, -vij);
-  EXPECT_TRUE((v_ij + v_ji).isZero(1e-12 * v_ij.norm()));
-  EXPECT_LT(v_ij.dot(vij), 0.0);  // viscosity opposes the relative velocity
+TEST(PairTerms, ThePairLoopGivesEqs3And4And10EqualAndOpposite) {
+  // Two fluid particles through the solver's own pair loop (fluid_pairs.cpp), against Eqs 3, 4
+  // and 10 written out here: F_i = -m_i m_j (P_i/rho_i^2 + P_j/rho_j^2) g x_ij
+  // + m_i m_j (2 mu)/(rho_i rho_j) g v_ij, F_j = -F_i, with g = (1/r) dW/dr.
+  FluidParticles f;
+  f.x.resize(3, 2);
+  f.x << 0, 3e-6, 0, -1e-6, 0, 2e-6;
+  f.v.resize(3, 2);
+  f.v << 0.2, 0, 0.1, 0, -0.3, 0;
+  f.m = Eigen::Vector2d(5.7e-13, 6.1e-13);
+  f.rho = Eigen::Vector2d(1001, 998);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  const double mu = 0.1;
+  const CubicSplineKernel kernel(6.8e-6);
+  NeighbourLists lists(1e-6);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  FluidRates rates;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, mu, 1, rates);
+
+  const Eigen::Vector3d xij = f.x.col(0) - f.x.col(1), vij = f.v.col(0) - f.v.col(1);
+  const double g = kernel.dW_dr_over_r(xij.norm());
+  const double Pi = eos.pressure(f.rho[0]), Pj = eos.pressure(f.rho[1]);
+  const Eigen::Vector3d expected =
+      -f.m[0] * f.m[1] * (Pi / (f.rho[0] * f.rho[0]) + Pj / (f.rho[1] * f.rho[1])) * g * xij +
+      f.m[0] * f.m[1] * 2 * mu / (f.rho[0] * f.rho[1]) * g * vij;
+  EXPECT_TRUE(rates.force.col(0).isApprox(expected, 1e-12)) << rates.force.col(0).transpose() << " vs " << expected.transpose();
+  EXPECT_TRUE((rates.force.col(0) + rates.force.col(1)).isZero(1e-12 * expected.norm()));
+  EXPECT_NEAR(rates.drho_dt[0], f.m[1] * vij.dot(g * xij), 1e-12 * std::abs(rates.drho_dt[0]));
+  EXPECT_NEAR(rates.drho_dt[1], f.m[0] * vij.dot(g * xij), 1e-12 * std::abs(rates.drho_dt[1]));
+  EXPECT_NEAR(rates.pressure[0], Pi, 1e-9);
+  // Positive pressure pushes the pair apart; viscosity alone (K = 0, P_T = 0) opposes v_ij.
+  const EquationOfState no_pressure{0.0, 0.0, 1000, 7};
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, no_pressure, mu, 1, rates);
+  EXPECT_LT(rates.force.col(0).dot(vij), 0.0);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.0, 1, rates);
+  EXPECT_GT(rates.force.col(0).dot(xij), 0.0);
+}
+
+TEST(PairTerms, EquationOfStateIsEq7) {
+  // P = P_T + K [(rho/rho0)^7 - 1]: P_T at rho0, and the integer power agrees with std::pow.
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  EXPECT_EQ(eos.pressure(1000), 2e5);
+  EXPECT_NEAR(eos.pressure(1010), 2e5 + 20e6 * (std::pow(1.01, 7) - 1), 1e-6);
+  EXPECT_NEAR(eos.pressure(990), 2e5 + 20e6 * (std::pow(0.99, 7) - 1), 1e-6);
+  const EquationOfState other{1e5, 20e6, 1000, 5};
+  EXPECT_NEAR(other.pressure(1010), 1e5 + 20e6 * (std::pow(1.01, 5) - 1), 1e-6);
+  EXPECT_NEAR(eos.sound_speed_m_s(), std::sqrt(7 * 20e6 / 1000), 1e-9);  // c0 of the CFL limit
 }
 
 TEST(PairTerms, BondDampingIsEqualAndOppositeAndOpposesMotion) {

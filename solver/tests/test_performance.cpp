@@ -8,22 +8,28 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 #include <vector>
 
 #include "case_file.hpp"
 #include "cell.hpp"
 #include "simulation.hpp"
+#include "version.hpp"
 
 using namespace cellsim;
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-// Measured 2026-11 on the 2-core AMD EPYC machines: 2.6-2.7 (x86-64-v3 build, four-lane pair loop;
-// 3.1-3.2 before it), 3.8-4.1 (baseline build, before it). 8 catches an accidental O(N^2) loop, a
-// per-step allocation storm or a lost optimisation flag (the code before the 2026-11 optimisations,
-// about twice as slow per step as now, would be ~5), and tolerates machine noise.
-constexpr double kRatioLimit = 8.0;
+// The limit is the highest ratio measured on this project's 2-core machines, times a margin of 1.5
+// for machine noise (measured 2026-11-23 with the build of that day; ctest runs two tests at once):
+//   x86-64-v3 build (AVX2 four-lane pair loop): 2.04-2.06 idle, up to 2.74 beside a compile -> 4.1;
+//   baseline build (-DCELLSIM_X86_64_V3=OFF):    8.63-8.86 -> 13.3 (its four-lane pair loop is 4x
+//   slower than the AVX2 one; see issue "performance at scale").
+// 1.5x catches a lost optimisation flag, a per-step allocation storm or an O(N^2) loop in a phase.
+constexpr double kMeasuredHighest = std::string_view(kInstructionSet) == "x86-64-v3" ? 2.74 : 8.86;
+constexpr double kMargin = 1.5;
+constexpr double kRatioLimit = kMeasuredHighest * kMargin;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -63,5 +69,6 @@ TEST(Performance, StepIsNotGrosslySlowerThanReferenceLoop) {
   ASSERT_TRUE(std::isfinite(checksum));
   const double ratio = best_step / best_loop;
   std::printf("one step = %.2f reference loops (%.3f ms vs %.3f ms)\n", ratio, best_step * 1e3, best_loop * 1e3);
-  EXPECT_LT(ratio, kRatioLimit) << "a step got grossly slower relative to plain arithmetic";
+  EXPECT_LT(ratio, kRatioLimit) << "a step got grossly slower relative to plain arithmetic (" << kInstructionSet
+                                << " build: limit " << kRatioLimit << ")";
 }

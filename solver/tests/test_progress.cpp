@@ -26,9 +26,9 @@ TEST(Progress, AContinuedRunCountsItsOwnStepsNeverAboveAHundredPercent) {
   const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400},
     "coupling": {"repulsion_f0_N_m": 1.5e-11}, "drying": {"steps": 600},
     "compression": {"steps": 300, "plate_speed_m_s": 10}, "output": {"progress_interval_s": 0}})");
-  auto r = cellsim::testing::run_cli("run " + c + " -o " + dir.file("dried.h5") + " --set compression.steps=0", dir);
+  auto r = cellsim::testing::run_cli({"run", c, "-o", dir.file("dried.h5"), "--set", "compression.steps=0"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = cellsim::testing::run_cli("run " + c + " --from " + dir.file("dried.h5") + " -o " + dir.file("out.h5"), dir);
+  r = cellsim::testing::run_cli({"run", c, "--from", dir.file("dried.h5"), "-o", dir.file("out.h5")}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::regex progress_line(R"(compression step (\d+)/(\d+) \((\d+)%\).*ETA (-?[0-9.]+) s)");
   int lines = 0;
