@@ -40,7 +40,8 @@ int collect_message(unsigned, const H5E_error2_t* e, void* out) {
   throw FileError(msg);
 }
 
-// Object-creation property lists with timestamps off (engineering.md: identical runs, identical files).
+// Object-creation property lists with timestamps off: identical runs, identical files
+// (docs/output-reference.md, "How a file is written").
 Handle untimed(hid_t cls) {
   Handle plist(check(H5Pcreate(cls), "H5Pcreate"), H5Pclose);
   check(H5Pset_obj_track_times(plist.id(), false), "H5Pset_obj_track_times", 0);

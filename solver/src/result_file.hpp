@@ -1,5 +1,5 @@
 #pragma once
-// One HDF5 result file per run (engineering.md "Output conventions"). It is written under
+// One HDF5 result file per run (docs/output-reference.md). It is written under
 // OUT.partial and renamed to OUT only when complete; the XDMF sidecars follow the rename.
 #include <string>
 #include <vector>

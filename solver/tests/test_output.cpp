@@ -1,4 +1,4 @@
-// The result file: layout, completeness flag, units, determinism (engineering.md "Output conventions").
+// The result file: layout, completeness flag, units, determinism (docs/output-reference.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
