@@ -2,11 +2,23 @@
 # from its dried state, aggregate, draw every figure, write the report.
 #   snakemake --cores 2                               the paper's study (config/config.yaml)
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
+from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
 min_version("7.21")
 
 configfile: "config/config.yaml"
+
+# workflow/profiles/slurm is a Snakemake 7 profile (--cluster); Snakemake 8+ reads its config.v8+.yaml,
+# which sets this key so that the run stops here with the way forward instead of an obscure failure.
+if config.pop("slurm_profile_needs_snakemake_7", False):
+    raise WorkflowError(
+        "workflow/profiles/slurm works with Snakemake 7.x only (it submits through --cluster, which "
+        "Snakemake 8 removed). With Snakemake 8 or later, install the SLURM executor plugin "
+        "(snakemake-executor-plugin-slurm) and run: snakemake --executor slurm --jobs 100 "
+        "--default-resources slurm_partition=<partition> slurm_account=<account> "
+        "[--configfile my.yaml]; the rules already give each job threads, mem_mb and runtime (minutes) "
+        "from the config's `resources`. See README, 'Running on a SLURM cluster'.")
 
 validate(config, "config/schema/config.schema.yaml")
 

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Compares two cellsim builds on this machine: runs `cellsim bench` of both at the same time, one
 per core, swapping cores each round, and prints the median ms per step per phase and the ratios.
 Shared virtual machines change speed within minutes; timing both side by side cancels that.

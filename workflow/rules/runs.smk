@@ -41,7 +41,7 @@ rule dry:
         mem_mb=job_resources("dry", "mem_mb", 1000),
         runtime=job_resources("dry", "runtime_min", 30),
     shell:
-        "{input.exe} run {input.case} --set compression.steps=0 --threads {threads} -o {output.h5} > {log} 2>&1"
+        "{input.exe:q} run {input.case:q} --set compression.steps=0 --threads {threads} -o {output.h5:q} > {log:q} 2>&1"
 
 
 rule compress:
@@ -60,4 +60,4 @@ rule compress:
         mem_mb=job_resources("compress", "mem_mb", 1000),
         runtime=job_resources("compress", "runtime_min", 20),
     shell:
-        "{input.exe} run {input.case} --from {input.dried} --threads {threads} -o {output.h5} > {log} 2>&1"
+        "{input.exe:q} run {input.case:q} --from {input.dried:q} --threads {threads} -o {output.h5:q} > {log:q} 2>&1"

@@ -11,4 +11,4 @@ rule build_solver:
     threads: 2  # scaled down to --cores when fewer
     shell:
         "(cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && "
-        "cmake --build build -j{threads} --target cellsim) > {log} 2>&1"
+        "cmake --build build -j{threads} --target cellsim) > {log:q} 2>&1"

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Snakemake --cluster-status command: prints running, success or failed for a SLURM job id.
 
 Asks scontrol first (works without SLURM accounting while the controller remembers the job), then

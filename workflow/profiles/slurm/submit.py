@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Snakemake --cluster command: submits one job script with sbatch and prints the SLURM job id.
 
 Cores, memory and time come from the job's threads and resources (config/config.yaml `resources`),
