@@ -74,3 +74,13 @@ def test_slurm_profile_stops_on_snakemake_8_with_the_way_forward(tmp_path):
     for words in ("Snakemake 7.x only", "snakemake-executor-plugin-slurm", "--executor slurm", "slurm_partition",
                   "slurm_account", "mem_mb", "runtime"):
         assert words in message, message[-2000:]
+
+
+def test_workflow_rules_have_no_run_blocks():
+    """Snakemake 7 spawns a `run:` job with an unquoted `cd <working directory>`, which fails in a
+    checkout whose path contains a space; `shell:` (paths quoted with :q) and `script:` do not."""
+    import re
+    for path in [ROOT / "Snakefile", *sorted((ROOT / "workflow" / "rules").glob("*.smk"))]:
+        assert not re.search(r"^\s+run:\s*$", path.read_text(), flags=re.M), path
+        for command in re.findall(r"\{(input|output|log)(?:\.\w+)?\}", path.read_text()):
+            raise AssertionError(f"{path.name}: quote {{{command}...}} in shell commands with :q")

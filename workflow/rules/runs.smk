@@ -11,9 +11,8 @@ rule case_file:
         f"{OUT}/cases/{{case}}.json",
     params:
         case=lambda w: CASES[w.case].case,
-    run:
-        with open(output[0], "w") as out:
-            out.write(matrix.case_json(params.case))
+    script:
+        "../scripts/case_file.py"
 
 
 rule dried_case_file:
@@ -21,9 +20,8 @@ rule dried_case_file:
         f"{OUT}/cases/dried/{{dried}}.json",
     params:
         case=lambda w: DRIED[w.dried],
-    run:
-        with open(output[0], "w") as out:
-            out.write(matrix.case_json(params.case))
+    script:
+        "../scripts/case_file.py"
 
 
 rule dry:
