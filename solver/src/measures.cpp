@@ -57,6 +57,8 @@ const std::vector<Quantity>& quantities() {
   return q;
 }
 
+double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
+
 Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
                const EquationOfState& eos) {
   Record r{};
@@ -75,7 +77,7 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   r.volume_m3 = surface.volume_m3;
   r.equivalent_diameter_m = equivalent_diameter_m(r.volume_m3);
   r.smoothing_length_m = s.smoothing_length_m;
-  r.cell_height_m = w.x.row(2).maxCoeff() - w.x.row(2).minCoeff();
+  r.cell_height_m = cell_height_m(w.x);
   const Eigen::Vector3d centroid = w.x.rowwise().mean();
   r.equatorial_radius_m = (w.x.topRows<2>().colwise() - centroid.head<2>()).colwise().norm().maxCoeff();
   r.kinetic_energy_fluid_J = 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
@@ -114,7 +116,7 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   r.contact_area_m2 = contact_area;
   r.contact_count = contacts;
   const double hc = pl.contact_height_m;
-  r.nominal_strain = (hc - r.cell_height_m) / hc;
+  r.nominal_strain = nominal_strain(hc, r.cell_height_m);
   r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
   r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
   r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);

@@ -32,6 +32,12 @@ struct Quantity {
 };
 const std::vector<Quantity>& quantities();
 
+// H: max z - min z of the wall particles; the nominal strain (H_c - H) / H_c (model.md §8).
+double cell_height_m(const Eigen::Matrix3Xd& wall_x);
+inline double nominal_strain(double contact_height_m, double height_m) {
+  return (contact_height_m - height_m) / contact_height_m;
+}
+
 // The record of state s; area, volume and normals come from its wall surface (surface.hpp).
 Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
                const EquationOfState& eos);

@@ -309,7 +309,7 @@ void Simulation::start_compression() {
   plates.bottom_z_m = z.minCoeff() - p_.plate_range_m;
   plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
   plates.start_time_s = s_.time_s;
-  plates.contact_height_m = z.maxCoeff() - z.minCoeff();
+  plates.contact_height_m = cell_height_m(s_.wall.x);
   plates.first_contact_top_z_m = std::nan("");
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
@@ -327,9 +327,6 @@ void Simulation::restore(const State& saved) {
 }
 
 double Simulation::nominal_strain() const {
-  if (!s_.plates.active) return 0.0;
-  const auto& z = s_.wall.x.row(2);
-  return (s_.plates.contact_height_m - (z.maxCoeff() - z.minCoeff())) / s_.plates.contact_height_m;
+  return s_.plates.active ? cellsim::nominal_strain(s_.plates.contact_height_m, cell_height_m(s_.wall.x)) : 0.0;
 }
-
 }  // namespace cellsim
