@@ -22,7 +22,7 @@ struct WallSurface {
   double volume_m3 = 0;            // sum of the signed tetrahedra (origin, triangle): > 0 when closed and outward
 
   void update(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
-  // The area each wall particle owns: a third of each adjacent triangle's (the contact area, §8).
+  // The area each wall particle owns: a third of each adjacent triangle's (the contact area, model.md §8).
   Eigen::VectorXd vertex_areas(const WallMesh& mesh) const;
 };
 
