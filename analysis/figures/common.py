@@ -47,6 +47,42 @@ def grid(n_rows, n_cols, panel_w=3.2, panel_h=3.0, **kw):
     return fig, axes
 
 
+# A legend column of the row below the panels takes about this width (labels of ~45 characters at 7 pt).
+LEGEND_COLUMN_IN = 2.9
+
+
+def row_with_legend(n_cols, n_entries, panel_w=3.2, panel_h=3.0, sharey=False):
+    """One row of panels of a fixed size and, below them, a row for the legend. A long legend then
+    takes height below the panels, never width from them (beside a single panel it squeezed the
+    panel to a sliver). Returns the figure, the panels and the legend's axes."""
+    import math
+    width = panel_w * n_cols + 0.6
+    columns = max(1, min(n_entries, int(width // LEGEND_COLUMN_IN)))
+    legend_h = 0.2 + 0.19 * math.ceil(max(n_entries, 1) / columns)
+    figure = plt.figure(figsize=(width, panel_h + 0.8 + legend_h), layout="constrained")
+    cells = figure.add_gridspec(2, n_cols, height_ratios=[panel_h, legend_h])
+    panels = []
+    for j in range(n_cols):
+        panels.append(figure.add_subplot(cells[0, j], sharey=panels[0] if sharey and panels else None))
+    legend_axes = figure.add_subplot(cells[1, :])
+    legend_axes.set_axis_off()
+    legend_axes.legend_columns = columns
+    return figure, panels, legend_axes
+
+
+def legend_below(legend_axes, panels):
+    """Every distinct label of the panels, once, in the legend row (row_with_legend)."""
+    handles, labels = {}, []
+    for ax in panels:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            if label not in handles:
+                handles[label] = handle
+                labels.append(label)
+    if labels:
+        legend_axes.legend([handles[label] for label in labels], labels, loc="upper center", fontsize=7,
+                           ncol=legend_axes.legend_columns, frameon=False, borderaxespad=0.0)
+
+
 def panel_letter(index):
     return "(" + "abcdefghijklmnopqrstuvwxyz"[index] + ")"
 

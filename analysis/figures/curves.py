@@ -3,7 +3,7 @@ quantity, with experimental reference curves on stress-strain panels (figures 4-
 import numpy as np
 
 from analysis import quantities
-from analysis.figures.common import grid, ordered, panel_letter, value_label
+from analysis.figures.common import legend_below, ordered, panel_letter, row_with_legend, value_label
 from analysis.references import load as load_reference
 
 
@@ -19,11 +19,13 @@ def draw(config, fig, series, root="."):
     panel_axis = spec.get("panels")
     panel_values = ordered(series[panel_axis], spec.get("panel_order")) if panel_axis else [None]
     panels = [(y, pv) for pv in panel_values for y in ys]
+    grouper = line_axes[0] if len(line_axes) == 1 else line_axes
+    n_lines = series.groupby(grouper).ngroups if line_axes else 1
+    n_references = len(spec.get("references", [])) if x == "nominal_strain" and "plate_stress_Pa" in ys else 0
 
-    figure, axes = grid(1, len(panels), sharey=len(ys) == 1)
-    for k, ((y, pv), ax) in enumerate(zip(panels, axes[0])):
+    figure, axes, legend_axes = row_with_legend(len(panels), n_lines + n_references, sharey=len(ys) == 1)
+    for k, ((y, pv), ax) in enumerate(zip(panels, axes)):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
-        grouper = line_axes[0] if len(line_axes) == 1 else line_axes
         groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
         colours = _colours(len(groups))
         for (key, curve), colour in zip(groups, colours):
@@ -43,8 +45,7 @@ def draw(config, fig, series, root="."):
         ax.grid(alpha=0.3)
         if stage == "all" and x == "time_s":
             _mark_compression_start(ax, data)
-    # Outside the last panel, so that it never covers a curve (savefig's tight box includes it).
-    axes[0][-1].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    legend_below(legend_axes, axes)  # below the panels: it never covers a curve nor narrows a panel
     figure.suptitle(spec["title"], fontsize=11)
     return figure
 

@@ -61,7 +61,7 @@ def draw(config, fig, runs, cases):
         return ordered([c.values[axis] for c in cases.values()], spec.get(order_key))
 
     rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
-    figure, axes = grid(len(rows), len(cols), panel_w=2.4, panel_h=2.4)
+    figure, axes = grid(len(rows), len(cols), panel_w=2.7, panel_h=2.7)
     for i, rv in enumerate(rows):
         for j, cv in enumerate(cols):
             ax = axes[i][j]

@@ -1,0 +1,95 @@
+"""Every figure of the default and CI configs is readable whatever its legend: each data panel keeps at
+least MIN_PANEL_IN in the saved figure, and no legend covers more than MAX_LEGEND_SHARE of a panel.
+Curves are drawn from synthetic series (one per case of the figure); shapes and the model figure
+from one small real run, shared by every case."""
+import subprocess
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from analysis import matrix, quantities
+from analysis.figures import curves, model, shapes
+
+MIN_PANEL_IN = (2.2, 2.0)  # width, height
+MAX_LEGEND_SHARE = 0.05
+
+
+def merged(base, update):
+    out = dict(base)
+    for key, value in update.items():
+        out[key] = merged(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
+    return out
+
+
+def configs(root):
+    default = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    return {"default": default, "ci": merged(default, yaml.safe_load((root / "config" / "ci.yaml").read_text()))}
+
+
+def synthetic_series(case, k):
+    """A drying record, then a compression: every drawable quantity a smooth curve, case k a bit apart."""
+    n = 40
+    t = np.arange(n + 1) * 1e-6
+    strain = np.concatenate([[np.nan], np.linspace(0, 0.2, n)])
+    rows = {name: (1 + 0.1 * k) * (1 + np.linspace(0, 1, n + 1)) / scale
+            for name, (_, scale) in quantities.DRAWABLE.items()}
+    rows.update(stage=np.r_[0.0, np.ones(n)], time_s=t, compression_time_s=np.r_[np.nan, t[:-1]],
+                nominal_strain=strain, plate_stress_Pa=(1 + 0.1 * k) * 5e5 * strain)
+    return pd.DataFrame(rows).assign(case=case.name, **case.values)
+
+
+@pytest.fixture(scope="module")
+def small_run(cellsim, tmp_path_factory):
+    """One dried state and one compression of a small cell, with snapshots in both stages."""
+    d = tmp_path_factory.mktemp("layout run")
+    case = d / "case.json"
+    case.write_text('{"cell": {"n_wall": 402, "n_fluid": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},'
+                    ' "drying": {"steps": 200}, "compression": {"steps": 400, "plate_speed_m_s": 5},'
+                    ' "output": {"snapshot_every": 100}}')
+    for args in (["-o", str(d / "dried.h5"), "--set", "compression.steps=0"],
+                 ["--from", str(d / "dried.h5"), "-o", str(d / "run.h5")]):
+        subprocess.run([cellsim, "run", str(case), "--quiet", *args], check=True, capture_output=True)
+    return str(d / "run.h5"), str(d / "dried.h5")
+
+
+def draw(config, fig, root, small_run):
+    cases = matrix.expand(config)
+    names = matrix.figure_cases(config, fig, cases)
+    family = config["figures"][fig]["family"]
+    if family == "curves":
+        series = pd.concat([synthetic_series(cases[n], k) for k, n in enumerate(names)], ignore_index=True)
+        return curves.draw(config, fig, series, root)
+    runs = {n: small_run for n in names}
+    return (model.draw if family == "model" else shapes.draw)(config, fig, runs, {n: cases[n] for n in names})
+
+
+def data_panels(figure):
+    return [ax for ax in figure.axes if ax.axison and (ax.lines or ax.collections)]
+
+
+@pytest.mark.parametrize("which", ["default", "ci"])
+def test_every_figure_keeps_its_panels_readable(root, small_run, tmp_path, which):
+    config = configs(root)[which]
+    checked = 0
+    for fig in sorted(config["figures"]):
+        figure = draw(config, fig, root, small_run)
+        figure.savefig(tmp_path / f"{fig}.png", dpi=130, bbox_inches="tight")
+        figure.canvas.draw()
+        panels = data_panels(figure)
+        assert panels, f"{which} {fig}: no data panel"
+        legends = [ax.get_legend() for ax in figure.axes if ax.get_legend()] + list(figure.legends)
+        for ax in panels:
+            box = ax.get_window_extent()
+            width, height = box.width / figure.dpi, box.height / figure.dpi
+            assert width >= MIN_PANEL_IN[0] and height >= MIN_PANEL_IN[1], \
+                f"{which} {fig}: a panel is {width:.2f} x {height:.2f} in, less than {MIN_PANEL_IN}"
+            for legend in legends:
+                overlap = box.intersection(box, legend.get_window_extent())
+                share = overlap.width * overlap.height / (box.width * box.height) if overlap else 0.0
+                assert share <= MAX_LEGEND_SHARE, f"{which} {fig}: the legend covers {share:.0%} of a panel"
+        import matplotlib.pyplot as plt
+        plt.close(figure)
+        checked += 1
+    assert checked == len(config["figures"]) >= 18
