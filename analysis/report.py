@@ -26,13 +26,17 @@ def caption(config, fig, cases):
 
 
 def claims_table(rows):
-    out = ["<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
-           "<th>agree if</th><th>verdict</th></tr>"]
+    """The claims with their curve-level verdicts, the old point values beside them, and the method."""
+    from analysis.claims import METHOD
+    number = lambda v: "" if v != v else f"{v:.3g}"  # noqa: E731 (NaN: empty)
+    out = [f"<p>{html.escape(METHOD)}</p>",
+           "<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
+           "<th>agree if</th><th>verdict</th><th>point value (strain 0.05)</th><th>note</th></tr>"]
     for r in rows:
-        value = "" if r["value"] != r["value"] else f"{r['value']:.3g}"
         out.append(f"<tr class='{r['verdict'].replace(' ', '-')}'><td>{html.escape(r['claim'])}</td><td>{r['figure']}</td>"
-                   f"<td>{html.escape(r['measured'])}</td><td>{value}</td><td>{html.escape(r['threshold'])}</td>"
-                   f"<td><b>{r['verdict']}</b></td></tr>")
+                   f"<td>{html.escape(r['measured'])}</td><td>{number(r['value'])}</td><td>{html.escape(r['threshold'])}</td>"
+                   f"<td><b>{r['verdict']}</b></td><td>{number(r.get('point_value', float('nan')))}</td>"
+                   f"<td>{html.escape(str(r.get('note', '')))}</td></tr>")
     out.append("</table>")
     return "\n".join(out)
 

@@ -86,17 +86,40 @@ def test_stress_at_strain_interpolates_on_first_crossing():
 
 def test_claims_compare_fresh_and_dried(config):
     base = {axis: matrix.get_key(config["base"], spec["key"]) for axis, spec in config["axes"].items()}
-    rows = []
+    rows, series = [], []
     for dryness, stiffness in [(1.0, 900.0), (0.1, 400.0)]:
         values = dict(base, dryness=dryness)
-        rows.append({**values, "settle_volume_ratio": 1.003 if dryness == 1.0 else 1.001,
-                     **aggregate.summarise(synthetic_series(stiffness, "x"))})
-    verdicts = {r["claim"]: r for r in claims.evaluate(pd.DataFrame(rows), base)}
+        ts = synthetic_series(stiffness, f"X{dryness}").assign(section_stress_Pa=np.nan)
+        series.append(ts)
+        rows.append({**values, "case": f"X{dryness}", "settle_volume_ratio": 1.003 if dryness == 1.0 else 1.001,
+                     **aggregate.summarise(ts)})
+    verdicts = {r["claim"]: r for r in claims.evaluate(pd.DataFrame(rows), base, pd.concat(series))}
     # The fresh cell's swelling is its inflation by the turgor at rest, not a change during drying.
     assert verdicts["During drying the fresh cell swells slightly and dried cells shrink"]["value"] == 1.003
     stiffer = verdicts["Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1, 200 kPa)"]
-    assert stiffer["value"] == pytest.approx(900 / 400) and stiffer["verdict"] == "agree"
+    assert stiffer["value"] == pytest.approx(900 / 400) and stiffer["verdict"] == "agree"  # curves, linear
+    assert stiffer["point_value"] == pytest.approx(900 / 400)
     assert verdicts["G = 18 and 0.18 MPa give virtually overlapping curves"]["verdict"] == "not run"
+
+
+def test_curve_verdicts_ignore_one_wiggle_that_decides_a_point_value():
+    """Two compressions alike but for one spike at strain 0.05 (a wall particle entering the plate's
+    range): the point value sees 27 %, the smoothed curves a few %."""
+    strain = np.linspace(0, 0.2, 201)
+    stress = 5e5 * strain + 2e4 * np.sin(40 * strain)
+    a = pd.DataFrame({"case": "a", "stage": 1.0, "nominal_strain": strain, "plate_stress_Pa": stress})
+    spiked = stress.copy()
+    spiked[50] *= 1.27
+    b = a.assign(case="b", plate_stress_Pa=spiked)
+    series = pd.concat([a, b])
+    assert aggregate.stress_at_strain(b, 0.05) / aggregate.stress_at_strain(a, 0.05) == pytest.approx(1.27)
+    curve_a, curve_b = claims.stress_curve(series, "a"), claims.stress_curve(series, "b")
+    assert claims.relative_rms(curve_a, curve_b) < 0.02
+    assert claims.mean_ratio(curve_a, curve_b) == pytest.approx(1.0, abs=0.01)
+    assert claims.mean_ratio(curve_a, claims.stress_curve(series.assign(plate_stress_Pa=2 * series["plate_stress_Pa"]), "a")) \
+        == pytest.approx(0.5)
+    grid, smooth = curve_a
+    assert grid[0] == pytest.approx(claims.START_STRAIN) and grid[-1] <= 0.2 - claims.SMOOTH_STRAIN + 1e-9
 
 
 def test_curves_figure_draws_one_line_per_case_and_the_references(config, root):

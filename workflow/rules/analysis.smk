@@ -41,6 +41,7 @@ rule figure:
 rule report:
     input:
         summary=f"{OUT}/tables/summary.csv",
+        timeseries=f"{OUT}/tables/timeseries.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=FIGURES),
         sources=["paper/report_intro.md", "docs/model-closures.md"],
     output:
