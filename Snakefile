@@ -27,7 +27,7 @@ include: "workflow/rules/common.smk"
 
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
-localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report
+localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report, three_js, cell_view
 
 
 include: "workflow/rules/solver.smk"

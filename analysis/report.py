@@ -41,15 +41,20 @@ def claims_table(rows):
     return "\n".join(out)
 
 
-def matrix_table(summary, axes):
+def matrix_table(summary, axes, cell_links=None):
+    """One row per case; with cell_links ({case: relative path}), a link to its 3-D page."""
     columns = ["case"] + list(axes) + ["studies", "drying_steady_time_us", "dried_M_over_M0", "dried_V_over_V0",
                                        "dried_mean_pressure_kPa",
                                        "strain_reached", "stress_kPa_at_0.05", "stress_kPa_at_0.10", "peak_force_top_uN"]
     columns = [c for c in columns if c in summary.columns]
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+    links = cell_links or {}
+    head = ("<th>3-D</th>" if links else "") + "".join(f"<th>{html.escape(c)}</th>" for c in columns)
     body = []
     for _, row in summary[columns].iterrows():
         cells = "".join(f"<td>{v:.4g}</td>" if isinstance(v, float) else f"<td>{html.escape(str(v))}</td>" for v in row)
+        if links:
+            link = links.get(row["case"])
+            cells = (f"<td><a href='{html.escape(link)}'>view</a></td>" if link else "<td></td>") + cells
         body.append(f"<tr>{cells}</tr>")
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
@@ -69,9 +74,11 @@ def warnings_box(summary):
             f"settle.max_iterations in config.<ul>{items}</ul></div>")
 
 
-def write(path, config, cases, summary, claim_rows, figure_files, root="."):
+def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=()):
+    """cell_pages: the cases' 3-D pages (analysis/cell_view.py), linked from the run matrix."""
     root = pathlib.Path(root)
     here = pathlib.Path(path).parent
+    cell_links = {pathlib.Path(p).stem: os.path.relpath(p, here) for p in cell_pages}
     parts = [markdown.markdown((root / "paper" / "report_intro.md").read_text())]
     parts.append(f"<p class='meta'>Generated {datetime.date.today().isoformat()} from {len(cases)} cases "
                  f"(output folder <code>{html.escape(config['output_dir'])}</code>).</p>")
@@ -84,7 +91,11 @@ def write(path, config, cases, summary, claim_rows, figure_files, root="."):
         parts.append(f"<figure id='{fig}'><img src='{html.escape(rel)}' alt='{fig}'>"
                      f"<figcaption><b>{fig}.</b> {html.escape(caption(config, fig, cases))}</figcaption></figure>")
     parts.append("<h2>Run matrix</h2>")
-    parts.append(matrix_table(summary, config["axes"]))
+    if cell_links:
+        parts.append("<p>'view' opens the case in 3-D: the wall as a surface and the fluid as points, turned with the "
+                     "mouse, a slider over the snapshots of drying and compression, coloured by fluid pressure or "
+                     "wall bond strain. The pages work offline, from this folder.</p>")
+    parts.append(matrix_table(summary, config["axes"], cell_links))
     parts.append("<h2>Model closures</h2>")
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
     style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"

@@ -2,8 +2,6 @@
 least MIN_PANEL_IN in the saved figure, and no legend covers more than MAX_LEGEND_SHARE of a panel.
 Curves are drawn from synthetic series (one per case of the figure); shapes and the model figure
 from one small real run, shared by every case."""
-import subprocess
-
 import numpy as np
 import pandas as pd
 import pytest
@@ -40,21 +38,8 @@ def synthetic_series(case, k):
     return pd.DataFrame(rows).assign(case=case.name, **case.values)
 
 
-@pytest.fixture(scope="module")
-def small_run(cellsim, tmp_path_factory):
-    """One dried state and one compression of a small cell, with snapshots in both stages."""
-    d = tmp_path_factory.mktemp("layout run")
-    case = d / "case.json"
-    case.write_text('{"cell": {"n_wall": 402, "n_fluid": 400}, "coupling": {"repulsion_f0_N_m": 1.5e-11},'
-                    ' "drying": {"steps": 200}, "compression": {"steps": 400, "plate_speed_m_s": 5},'
-                    ' "output": {"snapshot_every": 100}}')
-    for args in (["-o", str(d / "dried.h5"), "--set", "compression.steps=0"],
-                 ["--from", str(d / "dried.h5"), "-o", str(d / "run.h5")]):
-        subprocess.run([cellsim, "run", str(case), "--quiet", *args], check=True, capture_output=True)
-    return str(d / "run.h5"), str(d / "dried.h5")
-
-
 def draw(config, fig, root, small_run):
+    """small_run: (result, dried state) that every case of a shapes or model figure is drawn from."""
     cases = matrix.expand(config)
     names = matrix.figure_cases(config, fig, cases)
     family = config["figures"][fig]["family"]
@@ -70,7 +55,8 @@ def data_panels(figure):
 
 
 @pytest.mark.parametrize("which", ["default", "ci"])
-def test_every_figure_keeps_its_panels_readable(root, small_run, tmp_path, which):
+def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path, which):
+    small_run = small_runs[1.0]
     config = configs(root)[which]
     checked = 0
     for fig in sorted(config["figures"]):

@@ -44,8 +44,43 @@ rule report:
         timeseries=f"{OUT}/tables/timeseries.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=FIGURES),
         sources=["paper/report_intro.md", "docs/model-closures.md"],
+        cells=expand(f"{OUT}/report/cells/{{case}}.html", case=list(CASES)),
+        js=[f"{OUT}/report/js/three.min.js", f"{OUT}/report/js/OrbitControls.js"],
     output:
         html=f"{OUT}/report/index.html",
         claims=f"{OUT}/tables/claims.csv",
     script:
         "../scripts/report.py"
+
+
+# The cell in 3-D in the browser: one page per case, and three.js from Debian's libjs-three copied
+# beside them, so the report works offline from the results folder.
+THREE_JS = "/usr/share/javascript/three"
+
+
+rule three_js:
+    output:
+        three=f"{OUT}/report/js/three.min.js",
+        controls=f"{OUT}/report/js/OrbitControls.js",
+    params:
+        source=THREE_JS,
+    shell:
+        "test -f {params.source:q}/three.min.js || "
+        "{{ echo 'three.js not found in {params.source}: install libjs-three (scripts/setup)' >&2; exit 1; }}; "
+        "cp {params.source:q}/three.min.js {output.three:q} && "
+        "cp {params.source:q}/examples/js/controls/OrbitControls.js {output.controls:q}"
+
+
+rule cell_view:
+    input:
+        run=lambda w: run_file(w.case),
+        dried=lambda w: dried_file(CASES[w.case].dried),
+        template="paper/cell_view.html",
+        code="analysis/cell_view.py",
+    output:
+        html=f"{OUT}/report/cells/{{case}}.html",
+        data=f"{OUT}/report/cells/{{case}}.data.js",
+    params:
+        plate_um=lambda w: matrix.get_key(CASES[w.case].case, "compression.plate_length_um") or 150.0,
+    script:
+        "../scripts/cell_view.py"

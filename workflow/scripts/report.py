@@ -13,4 +13,4 @@ base = {axis: matrix.get_key(config["base"], spec["key"]) for axis, spec in conf
 rows = claims.evaluate(summary, base, series)
 pd.DataFrame(rows).to_csv(sm.output.claims, index=False)
 figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in config["figures"]}
-report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT)
+report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT, cell_pages=sm.input.cells)

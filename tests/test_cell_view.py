@@ -1,0 +1,59 @@
+"""The cell in 3-D in the browser (analysis/cell_view.py, paper/cell_view.html): headless Chromium opens
+the page of a fresh and a dried case from disk, with three.js copied from Debian's libjs-three, at the
+first and the last slider position. Each must render (the page reports it and no JavaScript error),
+draw something (the picture is not blank), and the two positions must differ. Set
+CELLSIM_KEEP_SCREENSHOTS=DIR to keep the pictures."""
+import os
+import re
+import pathlib
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+from analysis import cell_view
+
+THREE = pathlib.Path("/usr/share/javascript/three")
+CHROMIUM = shutil.which("chromium")
+pytestmark = pytest.mark.skipif(CHROMIUM is None or not (THREE / "three.min.js").exists(),
+                                reason="chromium or libjs-three is not installed: scripts/setup installs both")
+
+
+def browse(page, fragment, out, *extra):
+    return subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--enable-unsafe-swiftshader", "--window-size=900,700",
+                           "--virtual-time-budget=8000", *extra, f"{page.as_uri()}#{fragment}"],
+                          capture_output=True, text=True, timeout=120, cwd=out)
+
+
+def test_pages_render_each_snapshot_offline(small_runs, tmp_path):
+    report = tmp_path / "report"
+    (report / "cells").mkdir(parents=True)
+    (report / "js").mkdir()
+    shutil.copy(THREE / "three.min.js", report / "js")
+    shutil.copy(THREE / "examples" / "js" / "controls" / "OrbitControls.js", report / "js")
+    import matplotlib.image
+    keep = os.environ.get("CELLSIM_KEEP_SCREENSHOTS")
+    for dryness, (result, dried) in small_runs.items():
+        name = f"small_X{dryness}"
+        page, data = report / "cells" / f"{name}.html", report / "cells" / f"{name}.data.js"
+        cell_view.write(name, result, dried, page, data)
+        text = data.read_text()
+        assert "http" not in page.read_text().split("<script>")[0], "the page must not fetch anything"
+        n_frames = text.count('"time_us"')
+        assert n_frames >= 4 and '"stage": "drying"' in text and '"stage": "compression"' in text
+        pictures = []
+        for k, fragment in ((0, "snapshot=0"), (n_frames - 1, f"snapshot={n_frames - 1}&colour=wall_strain")):
+            dom = browse(page, fragment, tmp_path, "--dump-dom").stdout
+            status = re.search(r'<div id="status">([^<]*)</div>', dom)
+            assert status, dom[-2000:]
+            assert status.group(1) == f"rendered snapshot {k + 1} of {n_frames}", status.group(1)  # no JS error
+            png = tmp_path / f"{name}-{k}.png"
+            done = browse(page, fragment, tmp_path, f"--screenshot={png}")
+            assert png.exists(), done.stderr[-2000:]
+            image = matplotlib.image.imread(png)[200:, :, :3]  # below the controls: the canvas alone
+            assert image.std() > 0.05, f"{name} snapshot {k}: the canvas is blank"
+            pictures.append(image)
+            if keep:
+                shutil.copy(png, keep)
+        assert np.abs(pictures[0] - pictures[1]).mean() > 0.01, f"{name}: the two slider positions look the same"
