@@ -1,4 +1,6 @@
 """Shared figure helpers: axis titles, value labels, ordering, saving."""
+import math
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -51,14 +53,16 @@ def grid(n_rows, n_cols, panel_w=3.2, panel_h=3.0, **kw):
 LEGEND_COLUMN_IN = 2.9
 
 
+def legend_columns(width_in, n_entries):
+    return max(1, min(n_entries, int(width_in // LEGEND_COLUMN_IN)))
+
+
 def row_with_legend(n_cols, n_entries, panel_w=3.2, panel_h=3.0, sharey=False):
     """One row of panels of a fixed size and, below them, a row for the legend. A long legend then
     takes height below the panels, never width from them (beside a single panel it squeezed the
     panel to a sliver). Returns the figure, the panels and the legend's axes."""
-    import math
     width = panel_w * n_cols + 0.6
-    columns = max(1, min(n_entries, int(width // LEGEND_COLUMN_IN)))
-    legend_h = 0.2 + 0.19 * math.ceil(max(n_entries, 1) / columns)
+    legend_h = 0.2 + 0.19 * math.ceil(max(n_entries, 1) / legend_columns(width, n_entries))
     figure = plt.figure(figsize=(width, panel_h + 0.8 + legend_h), layout="constrained")
     cells = figure.add_gridspec(2, n_cols, height_ratios=[panel_h, legend_h])
     panels = []
@@ -66,7 +70,6 @@ def row_with_legend(n_cols, n_entries, panel_w=3.2, panel_h=3.0, sharey=False):
         panels.append(figure.add_subplot(cells[0, j], sharey=panels[0] if sharey and panels else None))
     legend_axes = figure.add_subplot(cells[1, :])
     legend_axes.set_axis_off()
-    legend_axes.legend_columns = columns
     return figure, panels, legend_axes
 
 
@@ -79,8 +82,9 @@ def legend_below(legend_axes, panels):
                 handles[label] = handle
                 labels.append(label)
     if labels:
+        columns = legend_columns(legend_axes.figure.get_figwidth(), len(labels))
         legend_axes.legend([handles[label] for label in labels], labels, loc="upper center", fontsize=7,
-                           ncol=legend_axes.legend_columns, frameon=False, borderaxespad=0.0)
+                           ncol=columns, frameon=False, borderaxespad=0.0)
 
 
 def panel_letter(index):
