@@ -50,7 +50,8 @@ def test_killed_workflow_resumes_as_the_readme_says(root, tmp_path, ci_run):
             assert f.attrs["completed"] == 1, h5
 
     # Without the README's first step the rerun stops at the dead run's lock: the reason for that step.
-    locked = subprocess.run(["snakemake", "--cores", "2", *options, "--rerun-incomplete", "-n"], cwd=root,
+    # (A dry run takes no lock, so this is the real command; it stops before running any job.)
+    locked = subprocess.run(["snakemake", "--cores", "2", *options, "--rerun-incomplete"], cwd=root,
                             capture_output=True, text=True, timeout=600)
     assert locked.returncode != 0 and "cannot be locked" in locked.stdout + locked.stderr
     commands = readme_recovery(root)
