@@ -28,7 +28,7 @@ def caption(config, fig, cases):
 def claims_table(rows):
     """The claims with their curve-level verdicts, the old point values beside them, and the method."""
     from analysis.claims import METHOD
-    number = lambda v: "" if v != v else f"{v:.3g}"  # noqa: E731 (NaN: empty)
+    number = lambda v: "" if v != v else f"{v:.4g}"  # noqa: E731 (NaN: empty)
     out = [f"<p>{html.escape(METHOD)}</p>",
            "<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
            "<th>agree if</th><th>verdict</th><th>point value (strain 0.05)</th><th>note</th></tr>"]
