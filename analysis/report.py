@@ -35,7 +35,7 @@ def claims_table(rows):
     for r in rows:
         out.append(f"<tr class='{r['verdict'].replace(' ', '-')}'><td>{html.escape(r['claim'])}</td><td>{r['figure']}</td>"
                    f"<td>{html.escape(r['measured'])}</td><td>{number(r['value'])}</td><td>{html.escape(r['threshold'])}</td>"
-                   f"<td><b>{r['verdict']}</b></td><td>{number(r.get('point_value', float('nan')))}</td>"
+                   f"<td class='verdict'><b>{r['verdict']}</b></td><td>{number(r.get('point_value', float('nan')))}</td>"
                    f"<td>{html.escape(str(r.get('note', '')))}</td></tr>")
     out.append("</table>")
     return "\n".join(out)
@@ -100,8 +100,8 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
     style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
              "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
-             "img{max-width:100%}figure{margin:2em 0}.agree td:last-child{color:green}"
-             ".disagree td:last-child{color:#b00}.not-run td:last-child{color:grey}"
+             "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
+             ".disagree td.verdict{color:#b00}.not-run td.verdict{color:grey}"
              ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
     pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>cellsim reproduction report"
                                   f"</title><style>{style}</style></head><body>{''.join(parts)}</body></html>\n")
