@@ -100,13 +100,13 @@ def evaluate(summary, base, series):
     at = lambda **kw: {**{k: v for k, v in b.items() if k not in ("dryness",)}, **kw}  # noqa: E731
     empty = (np.array([]), np.array([]))
 
-    def curve(column="plate_stress_Pa", **values):
-        rows = _pick(summary, **at(**values))
-        return stress_curve(series, rows["case"].iloc[0], column) if len(rows) else empty
-
     def case_of(**values):
         rows = _pick(summary, **at(**values))
         return rows["case"].iloc[0] if len(rows) else None
+
+    def curve(column="plate_stress_Pa", **values):
+        case = case_of(**values)
+        return stress_curve(series, case, column) if case is not None else empty
 
     point = lambda **values: _one(summary, STRESS, **at(**values))  # noqa: E731
     rows = []

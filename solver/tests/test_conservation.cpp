@@ -9,6 +9,7 @@
 #include "cell.hpp"
 #include "fluid_pairs.hpp"
 #include "simulation.hpp"
+#include "small_cell.hpp"
 
 using namespace cellsim;
 
@@ -78,10 +79,8 @@ TEST(Conservation, ViscosityAloneDissipatesKineticEnergy) {
 }
 
 TEST(Conservation, WholeCellConservesMomentumWithoutMassTransfer) {
-  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}},
-                        {"drying", {{"Lp_m_per_s_Pa", 0}, {"pressure_closure_time_us", 0}, {"dryness", 0.5}}},
-                        {"time", {{"dt_ns", 0.5}}}};
-  Params p = validate_case(doc);
+  Params p = cellsim::testing::small_cell_case(
+      {{"drying", {{"Lp_m_per_s_Pa", 0}, {"pressure_closure_time_us", 0}, {"dryness", 0.5}}}});
   const Cell cell = build_cell(p);
   Simulation sim(p, cell);
   std::mt19937 rng(11);

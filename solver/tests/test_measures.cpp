@@ -10,15 +10,13 @@
 #include "case_file.hpp"
 #include "cell.hpp"
 #include "simulation.hpp"
+#include "small_cell.hpp"
 
 using namespace cellsim;
 
 namespace {
 
-Params small_case() {
-  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}}, {"time", {{"dt_ns", 0.5}}}};
-  return validate_case(doc);
-}
+Params small_case() { return cellsim::testing::small_cell_case(); }
 
 }  // namespace
 

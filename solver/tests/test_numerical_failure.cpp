@@ -10,14 +10,14 @@
 #include "cli_helpers.hpp"
 #include "errors.hpp"
 #include "simulation.hpp"
+#include "small_cell.hpp"
 
 using namespace cellsim;
 
 namespace {
 
 Simulation small_simulation() {
-  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}}, {"time", {{"dt_ns", 0.5}}}};
-  Params p = validate_case(doc);
+  Params p = cellsim::testing::small_cell_case();
   return Simulation(p, build_cell(p));
 }
 
@@ -68,9 +68,7 @@ TEST(NumericalFailure, TheSoundSpeedLimitNamesTheFastestParticle) {
 
 TEST(NumericalFailure, TheViscousLimitStopsAToViscousFluid) {
   // 0.125 h^2 rho0 / mu < 0.5 ns for mu above ~0.8 Pa s at h = 1.8 um.
-  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}},
-                        {"fluid", {{"viscosity_Pa_s", 50.0}}}, {"time", {{"dt_ns", 0.5}}}};
-  Params p = validate_case(doc);
+  Params p = cellsim::testing::small_cell_case({{"fluid", {{"viscosity_Pa_s", 50.0}}}});
   Simulation sim(p, build_cell(p));
   const std::string message = failure_of_next_step(sim);
   EXPECT_NE(message.find("viscous limit"), std::string::npos) << message;

@@ -8,6 +8,7 @@
 #include "cell.hpp"
 #include "pressure_closure.hpp"
 #include "simulation.hpp"
+#include "small_cell.hpp"
 
 using namespace cellsim;
 
@@ -30,8 +31,7 @@ TEST(PressureClosure, RatioIsClampedAndNoTurgorMeansNoChange) {
 
 TEST(PressureClosure, ActsInDryingAndIsOffInCompression) {
   // With L_p = 0 in both stages, Eq 11 moves no mass, so any change of a fluid mass is the closure's.
-  nlohmann::json doc = {{"cell", {{"n_wall", 162}, {"n_fluid", 120}, {"diameter_um", 40}}}, {"time", {{"dt_ns", 0.5}}}};
-  Params p = validate_case(doc);
+  Params p = cellsim::testing::small_cell_case();
   p.drying_Lp_m_per_s_Pa = p.compression_Lp_m_per_s_Pa = 0;
   Simulation sim(p, build_cell(p));
   Eigen::VectorXd before = sim.state().fluid.m;
