@@ -7,10 +7,9 @@ import base64
 import json
 import pathlib
 
-import h5py
 import numpy as np
 
-from analysis.results import open_result, snapshots
+from analysis.results import open_result, snapshot, snapshots
 
 MAX_DRYING, MAX_COMPRESSION = 5, 8  # snapshots per stage shown on the slider (evenly picked)
 TEMPLATE = pathlib.Path(__file__).resolve().parent.parent / "paper" / "cell_view.html"
@@ -32,8 +31,8 @@ def wall_bond_strain(wall, bonds, rest_length):
     return total / np.maximum(count, 1)
 
 
-def _b64(array):
-    return base64.b64encode(np.ascontiguousarray(array, dtype="<f4").tobytes()).decode("ascii")
+def _b64(array, dtype="<f4"):
+    return base64.b64encode(np.ascontiguousarray(array, dtype=dtype).tobytes()).decode("ascii")
 
 
 def data(case_name, result, dried, plate_um=150.0):
@@ -41,22 +40,18 @@ def data(case_name, result, dried, plate_um=150.0):
     picked = [(dried, s) for s in evenly([s for s in snapshots(dried) if s[2] == 0], MAX_DRYING)]
     picked += [(result, s) for s in evenly([s for s in snapshots(result) if s[2] == 1], MAX_COMPRESSION)]
     with open_result(result) as f:
-        triangles = f["mesh/triangles"][()]
         bonds, rest = f["mesh/bonds"][()], f["mesh/bond_rest_length"][()]
     frames = []
     for path, (group, time_s, stage) in picked:
-        with open_result(path) as f:
-            g = f["snapshots"][group]
-            wall, fluid = g["wall_positions"][()], g["fluid_positions"][()]
-            frames.append({"time_us": time_s * 1e6, "stage": "drying" if stage == 0 else "compression",
-                           "wall": _b64(wall * 1e6), "fluid": _b64(fluid * 1e6),
-                           "pressure_kPa": _b64(g["fluid_pressure"][()] / 1e3),
-                           "wall_strain": _b64(wall_bond_strain(wall, bonds, rest)),
-                           "plates_um": [float(z) * 1e6 if np.isfinite(z) else None
-                                         for z in (g.attrs["plate_top_z_m"], g.attrs["plate_bottom_z_m"])]})
-    return {"case": case_name, "n_wall": int(len(wall)), "n_fluid": int(len(fluid)), "plate_um": plate_um,
-            "triangles": base64.b64encode(np.ascontiguousarray(triangles, dtype="<u4").tobytes()).decode("ascii"),
-            "frames": frames}
+        snap = snapshot(path, group)
+        frames.append({"time_us": time_s * 1e6, "stage": "drying" if stage == 0 else "compression",
+                       "wall": _b64(snap["wall"] * 1e6), "fluid": _b64(snap["fluid"] * 1e6),
+                       "pressure_kPa": _b64(snap["pressure"] / 1e3),
+                       "wall_strain": _b64(wall_bond_strain(snap["wall"], bonds, rest)),
+                       "plates_um": [z * 1e6 if np.isfinite(z) else None
+                                     for z in (snap["plate_top_z_m"], snap["plate_bottom_z_m"])]})
+    return {"case": case_name, "n_wall": len(snap["wall"]), "n_fluid": len(snap["fluid"]), "plate_um": plate_um,
+            "triangles": _b64(snap["triangles"], "<u4"), "frames": frames}
 
 
 def write(case_name, result, dried, html_path, data_path, plate_um=150.0):

@@ -9,6 +9,7 @@ import pathlib
 import shutil
 import subprocess
 
+import matplotlib.image
 import numpy as np
 import pytest
 
@@ -32,7 +33,6 @@ def test_pages_render_each_snapshot_offline(small_runs, tmp_path):
     (report / "js").mkdir()
     shutil.copy(THREE / "three.min.js", report / "js")
     shutil.copy(THREE / "examples" / "js" / "controls" / "OrbitControls.js", report / "js")
-    import matplotlib.image
     keep = os.environ.get("CELLSIM_KEEP_SCREENSHOTS")
     for dryness, (result, dried) in small_runs.items():
         name = f"small_X{dryness}"

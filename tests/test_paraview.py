@@ -7,6 +7,7 @@ import shutil
 import subprocess
 
 import h5py
+import matplotlib.image
 import numpy as np
 import pytest
 
@@ -37,7 +38,6 @@ def test_paraview_reads_and_renders_both_sidecars(cellsim, tmp_path):
     assert read["wall"] == {**read["wall"], "points": n_wall, "cells": n_triangles, "times": n_snapshots}
     assert read["fluid"]["points"] == n_fluid and read["fluid"]["times"] == n_snapshots
     assert "pressure" in read["fluid"]["arrays"] and "velocities" in read["wall"]["arrays"]
-    import matplotlib.image
     image = matplotlib.image.imread(png)
     assert image.shape[:2] == (600, 800)
     assert np.std(image[..., :3]) > 0.02, "the rendered picture is blank"
