@@ -2,6 +2,7 @@
 # from its dried state, aggregate, draw every figure, write the report.
 #   snakemake --cores 2                               the paper's study (config/config.yaml)
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
+#   snakemake --cores 2 convergence                   resolution and time-step convergence (not default)
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -27,12 +28,14 @@ include: "workflow/rules/common.smk"
 
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
-localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report, three_js, cell_view
+localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
+    convergence, aggregate_convergence, convergence_page
 
 
 include: "workflow/rules/solver.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/analysis.smk"
+include: "workflow/rules/convergence.smk"
 
 
 rule all:

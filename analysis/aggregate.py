@@ -6,6 +6,7 @@ import pandas as pd
 from analysis.results import drying_summary, flatten, resolved_case, timeseries
 
 STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
+LOAD_WINDOW = (0.05, 0.15)    # nominal strains over which the load partition is averaged
 
 
 def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
@@ -27,6 +28,20 @@ def with_compression_time(ts):
     drying = ts["stage"] == 0
     compression_start = ts.loc[drying, "time_s"].max() if drying.any() else ts["time_s"].min()
     return ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - compression_start))
+
+
+def load_partition(compression, window=LOAD_WINDOW):
+    """How the top plate's load is carried over a strain window (model.md §8), as ratios of sums:
+    plate force / (mean fluid pressure x top contact area), and the fluid's share of what holds the
+    touching wall particles up (fluid push / (fluid push + wall's own forces)). NaN if the window
+    is not reached."""
+    e = compression["nominal_strain"]
+    w = compression[(e >= window[0]) & (e <= window[1])]
+    if w.empty or "load_fluid_N" not in w:
+        return np.nan, np.nan
+    held = (w["load_fluid_N"] + w["load_wall_N"]).sum()
+    return (w["plate_force_top_N"].sum() / w["pressure_load_N"].sum(),
+            w["load_fluid_N"].sum() / held if held else np.nan)
 
 
 def summarise(ts):
@@ -53,6 +68,9 @@ def summarise(ts):
         })
         for e in STRAINS:
             out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
+        force_ratio, fluid_share = load_partition(compression)
+        out["load_F_over_pA"] = force_ratio
+        out["load_fluid_share"] = fluid_share
     return out
 
 

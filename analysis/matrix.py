@@ -3,8 +3,15 @@
 A case is `base` with the values of every axis set; its name lists every axis as label+value,
 in the order of the labels (e.g. D150_G18_P200_t6_v1_X0.5), so names are stable when studies are
 added or removed, whatever order config files list the axes in, and identical cases of different
-studies coincide. The dried state of a case is the same name
+studies coincide. An axis with `hide_base_value` appears in a name only where its value differs
+from base (so adding such an axis renames no existing case). An axis without a key (a resolution
+level, say) sets only its `coupled` keys, and its value at base is `base_value`. Coupled keys are
+set after every axis's own key, and a hidden axis's value is read back from the finished case, so
+a name always says what the case runs. The dried state of a case is the same name
 without the axes that only touch the compression stage.
+
+A study with `target: NAME` is not part of the default target (`snakemake --cores 2`); it runs
+with `snakemake --cores 2 NAME`.
 """
 import copy
 import itertools
@@ -41,16 +48,54 @@ def set_key(case, key, value):
     case.setdefault(section, {})[name] = value
 
 
-def is_compression_only(key):
-    return key.startswith("compression.")
+DEFAULT_TARGET = "all"
+
+
+def axis_keys(spec):
+    """Every case key an axis sets: its own key and those of its coupled values."""
+    keys = [spec["key"]] if "key" in spec else []
+    for coupled in spec.get("coupled", {}).values():
+        keys += [k for k in coupled if k not in keys]
+    return keys
+
+
+def is_compression_only(spec):
+    keys = axis_keys(spec)
+    return bool(keys) and all(k.startswith("compression.") for k in keys)
+
+
+def base_value(config, axis):
+    spec = config["axes"][axis]
+    return get_key(config["base"], spec["key"]) if "key" in spec else spec.get("base_value")
+
+
+def target_of(config, study):
+    return config["studies"][study].get("target", DEFAULT_TARGET)
+
+
+def target_names(config):
+    return sorted({target_of(config, s) for s in config["studies"]} | {DEFAULT_TARGET})
+
+
+def target_cases(config, cases, target=DEFAULT_TARGET):
+    """Names of the cases a target runs: those of its studies."""
+    studies = {s for s in config["studies"] if target_of(config, s) == target}
+    return [c.name for c in cases.values() if studies & set(c.studies)]
+
+
+def target_figures(config, target=DEFAULT_TARGET):
+    return [f for f, spec in config["figures"].items() if target_of(config, spec["study"]) == target]
 
 
 def check(config, root="."):
     """Cross-references the schema cannot check; raises ConfigError naming the key."""
     axes, studies = config["axes"], config["studies"]
     for axis, spec in axes.items():
-        if get_key(config["base"], spec["key"]) is None:
+        if "key" in spec and get_key(config["base"], spec["key"]) is None:
             raise ConfigError(f"axes.{axis}: base has no value for its key '{spec['key']}' (add it to base)")
+        if "key" not in spec and ("base_value" not in spec or "coupled" not in spec):
+            raise ConfigError(f"axes.{axis}: an axis without a key needs base_value and coupled (the keys each "
+                              "value sets)")
     labels = [spec["label"] for spec in axes.values()]
     if len(set(labels)) != len(labels):
         raise ConfigError(f"axes: labels must be distinct, got {labels}")
@@ -58,6 +103,14 @@ def check(config, root="."):
         for axis in spec["vary"]:
             if axis not in axes:
                 raise ConfigError(f"studies.{study}.vary.{axis}: unknown axis; known: {sorted(axes)}")
+            if "key" not in axes[axis]:
+                known = sorted([fmt(axes[axis]["base_value"])] + list(axes[axis]["coupled"]), key=float)
+                for value in spec["vary"][axis]:
+                    if fmt(value) not in known:
+                        raise ConfigError(f"studies.{study}.vary.{axis}: value {fmt(value)} is not one of the "
+                                          f"axis's values {known} (axes.{axis}.coupled names them)")
+        if target_of(config, study) == DEFAULT_TARGET and "target" in spec:
+            raise ConfigError(f"studies.{study}.target: '{DEFAULT_TARGET}' is the default target; leave target out")
     references = config.get("references", {})
     for ref, spec in references.items():
         if not (pathlib.Path(root) / spec["file"]).is_file():
@@ -101,7 +154,7 @@ def check_cases(config, root="."):
         error = next(iter(sorted(validator.iter_errors(case.case), key=lambda e: list(e.path))), None)
         if error is not None:
             key = ".".join(str(p) for p in error.path)
-            axis = next((a for a, spec in config["axes"].items() if spec["key"] == key), None)
+            axis = next((a for a, spec in config["axes"].items() if key in axis_keys(spec)), None)
             origin = (f"studies {', '.join(case.studies)}: axis {axis}" if axis else "base or a coupled value")
             raise ConfigError(f"{origin}: case {case.name} has {key} = {error.instance!r}: {error.message}")
 
@@ -110,32 +163,46 @@ def _by_label(config):
     return sorted(config["axes"].items(), key=lambda item: item[1]["label"].lower())
 
 
+def _named(config, values, axis, spec):
+    return not (spec.get("hide_base_value") and _same(values[axis], base_value(config, axis)))
+
+
+def _same(a, b):
+    return abs(a - b) <= 1e-12 * max(1.0, abs(b))
+
+
 def case_name(config, values):
-    return "_".join(spec["label"] + fmt(values[axis]) for axis, spec in _by_label(config))
+    return "_".join(spec["label"] + fmt(values[axis]) for axis, spec in _by_label(config)
+                    if _named(config, values, axis, spec))
 
 
 def dried_name(config, values):
     return "_".join(spec["label"] + fmt(values[axis]) for axis, spec in _by_label(config)
-                    if not is_compression_only(spec["key"]))
+                    if not is_compression_only(spec) and _named(config, values, axis, spec))
 
 
 def expand(config):
     """All cases of all studies, deduplicated: {name: Case}, in a stable order."""
     axes, base = config["axes"], config["base"]
-    base_values = {axis: get_key(base, spec["key"]) for axis, spec in axes.items()}
+    base_values = {axis: base_value(config, axis) for axis in axes}
     cases = {}
     for study, spec in config["studies"].items():
         varied = list(spec["vary"])
         for combo in itertools.product(*(spec["vary"][a] for a in varied)):
             values = dict(base_values)
             values.update(dict(zip(varied, combo)))
+            case = copy.deepcopy(base)
+            for axis, value in values.items():
+                if "key" in axes[axis]:
+                    set_key(case, axes[axis]["key"], value)
+            for axis, value in values.items():
+                for key, coupled in axes[axis].get("coupled", {}).get(fmt(value), {}).items():
+                    set_key(case, key, coupled)
+            for axis, axis_spec in axes.items():
+                if "key" in axis_spec and axis_spec.get("hide_base_value"):
+                    values[axis] = get_key(case, axis_spec["key"])
             name = case_name(config, values)
             if name not in cases:
-                case = copy.deepcopy(base)
-                for axis, value in values.items():
-                    set_key(case, axes[axis]["key"], value)
-                    for key, coupled in axes[axis].get("coupled", {}).get(fmt(value), {}).items():
-                        set_key(case, key, coupled)
                 cases[name] = Case(name, dried_name(config, values), values, case)
             if study not in cases[name].studies:
                 cases[name].studies.append(study)

@@ -17,13 +17,36 @@ def config(root):
 
 def test_matrix_deduplicates_and_shares_dried_states(config):
     cases = matrix.expand(config)
-    assert len(cases) == 48
+    assert len(matrix.target_cases(config, cases)) == 48  # the paper's studies, the default target
     baseline = cases["D150_G18_P200_t6_v1_X1"]
-    assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size"}
+    assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size",
+                                     "convergence_resolution", "convergence_time_step"}
     fast = cases["D150_G18_P200_t6_v10_X0.5"]
     assert fast.dried == cases["D150_G18_P200_t6_v1_X0.5"].dried == "D150_G18_P200_t6_X0.5"
     assert fast.case["compression"]["plate_speed_m_s"] == 10 and fast.case["drying"]["dryness"] == 0.5
-    assert len(matrix.dried_states(cases)) == 39
+    default = {n: cases[n] for n in matrix.target_cases(config, cases)}
+    assert len(matrix.dried_states(default)) == 39
+
+
+def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
+    """Resolution levels set only coupled keys; a level's dt shows in the name; the paper's cases
+    keep their names (hidden axes at their base value are not named)."""
+    cases = matrix.expand(config)
+    convergence = matrix.target_cases(config, cases, "convergence")
+    assert len(convergence) == 12  # 3 dryness x (3 levels + dt 0.5 at level 1)
+    fine = cases["D150_dt0.5_G18_P200_R3_t6_v1_X0.1"]
+    assert fine.case["cell"]["n_fluid"] == 24656 and fine.case["cell"]["n_wall"] == 8268
+    assert fine.case["time"]["dt_ns"] == 0.5 and fine.values["dt_ns"] == 0.5 and fine.values["resolution"] == 3
+    assert fine.dried == "D150_dt0.5_G18_P200_R3_t6_X0.1"
+    assert cases["D150_G18_P200_R2_t6_v1_X1"].case["cell"]["n_fluid"] == 8717
+    assert "D150_G18_P200_t6_v1_X1" in convergence  # level 1 at 1 ns is the paper's baseline case
+    assert not any("R" in n.split("_")[3] for n in matrix.target_cases(config, cases))
+
+
+def test_keyless_axis_value_must_be_one_it_defines(config):
+    bad = dict(config, studies=dict(config["studies"], extra={"vary": {"resolution": [4]}, "target": "convergence"}))
+    with pytest.raises(matrix.ConfigError, match=r"studies.extra.vary.resolution: value 4"):
+        matrix.check(bad, ".")
 
 
 def test_coupled_values_follow_their_axis(config):
@@ -85,7 +108,7 @@ def test_stress_at_strain_interpolates_on_first_crossing():
 
 
 def test_claims_compare_fresh_and_dried(config):
-    base = {axis: matrix.get_key(config["base"], spec["key"]) for axis, spec in config["axes"].items()}
+    base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
     rows, series = [], []
     for dryness, stiffness in [(1.0, 900.0), (0.1, 400.0)]:
         values = dict(base, dryness=dryness)

@@ -47,12 +47,20 @@ const std::vector<Quantity>& quantities() {
       {"contact_area_m2", "m^2", "area (a third of each adjacent triangle) of wall particles within r_pw of a plate",
        &Record::contact_area_m2},
       {"contact_count", "1", "wall particles within r_pw of a plate", &Record::contact_count},
+      {"contact_area_top_m2", "m^2", "contact area of the top plate alone (its wall particles' owned area)",
+       &Record::contact_area_top_m2},
+      {"pressure_load_N", "N", "mean fluid pressure x top contact area: the load a pressurised membrane would carry",
+       &Record::pressure_load_N},
+      {"load_fluid_N", "N", "upward force of the fluid (wall-fluid coupling) on the wall particles touching the top plate",
+       &Record::load_fluid_N},
+      {"load_wall_N", "N", "upward force of the wall itself (bonds, bending, damping) on the wall particles touching the top plate",
+       &Record::load_wall_N},
       {"nominal_strain", "1", "(H_c - H) / H_c, H_c the cell height when compression starts",
        &Record::nominal_strain},
       {"plate_strain", "1", "top-plate travel since first contact / H_c", &Record::plate_strain},
       {"plate_stress_Pa", "Pa", "F_top / (plate length x width)", &Record::plate_stress_Pa},
       {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
-      {"contact_stress_Pa", "Pa", "F_top / contact area (NaN without contact)", &Record::contact_stress_Pa},
+      {"contact_stress_Pa", "Pa", "F_top / top contact area (NaN without contact)", &Record::contact_stress_Pa},
   };
   return q;
 }
@@ -60,7 +68,7 @@ const std::vector<Quantity>& quantities() {
 double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
 
 Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
-               const EquationOfState& eos) {
+               const EquationOfState& eos, const LoadPartition& load) {
   Record r{};
   const auto& f = s.fluid;
   const auto& w = s.wall;
@@ -94,7 +102,8 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   const Plates& pl = s.plates;
   if (!pl.active) {
     r.plate_top_z_m = r.plate_bottom_z_m = r.plate_force_top_N = r.plate_force_bottom_N = kNaN;
-    r.contact_area_m2 = r.contact_count = kNaN;
+    r.contact_area_m2 = r.contact_count = r.contact_area_top_m2 = kNaN;
+    r.pressure_load_N = r.load_fluid_N = r.load_wall_N = kNaN;
     r.nominal_strain = r.plate_strain = r.plate_stress_Pa = r.section_stress_Pa = r.contact_stress_Pa = kNaN;
     return r;
   }
@@ -120,7 +129,12 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
   r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
   r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
-  r.contact_stress_Pa = contact_area > 0 ? pl.force_top_N / contact_area : kNaN;
+  r.contact_area_top_m2 = load.contact_area_top_m2;
+  r.pressure_load_N = r.mean_pressure_Pa * load.contact_area_top_m2;
+  r.load_fluid_N = load.fluid_push_N;
+  r.load_wall_N = load.wall_push_N;
+  // The top plate's force over the top plate's own contact (the bottom one carries the same load).
+  r.contact_stress_Pa = load.contact_area_top_m2 > 0 ? pl.force_top_N / load.contact_area_top_m2 : kNaN;
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "eos.hpp"
+#include "load_partition.hpp"
 #include "params.hpp"
 #include "state.hpp"
 #include "surface.hpp"
@@ -20,7 +21,8 @@ struct Record {
   double max_fluid_speed_m_s, kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
   double wall_tension_N_m, wall_pressure_Pa;
   double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
-  double contact_area_m2, contact_count;
+  double contact_area_m2, contact_count, contact_area_top_m2;
+  double pressure_load_N, load_fluid_N, load_wall_N;
   double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa;
 };
 
@@ -38,9 +40,10 @@ inline double nominal_strain(double contact_height_m, double height_m) {
   return (contact_height_m - height_m) / contact_height_m;
 }
 
-// The record of state s; area, volume and normals come from its wall surface (surface.hpp).
+// The record of state s; area, volume and normals come from its wall surface (surface.hpp), the
+// top plate's load partition from the forces of the last step (load_partition.hpp).
 Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
-               const EquationOfState& eos);
+               const EquationOfState& eos, const LoadPartition& load);
 
 std::string output_reference_markdown();
 

@@ -326,6 +326,12 @@ void Simulation::restore(const State& saved) {
   compute_rates();
 }
 
+Record Simulation::record() const {
+  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, lj_on_wall_, surface_.vertex_areas(mesh_),
+                                            plate_law_, s_.plates);
+  return measure(s_, mesh_, surface_, p_, eos(), load);
+}
+
 double Simulation::nominal_strain() const {
   return s_.plates.active ? cellsim::nominal_strain(s_.plates.contact_height_m, cell_height_m(s_.wall.x)) : 0.0;
 }

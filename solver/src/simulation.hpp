@@ -37,7 +37,7 @@ class Simulation {
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
-  Record record() const { return measure(s_, mesh_, surface_, p_, eos()); }
+  Record record() const;
   const PhaseTimer& timer() const { return timer_; }
   const NeighbourLists& neighbours() const { return neighbours_; }
   PhaseTimer& timer() { return timer_; }

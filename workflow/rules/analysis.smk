@@ -3,14 +3,14 @@ rule manifest:
     output:
         f"{OUT}/manifest.csv",
     params:
-        cases=lambda w: [(c.name, c.dried, c.studies, c.values) for c in CASES.values()],
+        cases=lambda w: [(c.name, c.dried, c.studies, c.values) for c in map(CASES.get, DEFAULT_CASES)],
     script:
         "../scripts/manifest.py"
 
 
 rule aggregate:
     input:
-        runs=[run_file(c) for c in CASES],
+        runs=[run_file(c) for c in DEFAULT_CASES],
     output:
         timeseries=f"{OUT}/tables/timeseries.csv",
         summary=f"{OUT}/tables/summary.csv",
@@ -44,7 +44,7 @@ rule report:
         timeseries=f"{OUT}/tables/timeseries.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=FIGURES),
         sources=["paper/report_intro.md", "docs/model-closures.md"],
-        cells=expand(f"{OUT}/report/cells/{{case}}.html", case=list(CASES)),
+        cells=expand(f"{OUT}/report/cells/{{case}}.html", case=DEFAULT_CASES),
         js=[f"{OUT}/report/js/three.min.js", f"{OUT}/report/js/OrbitControls.js"],
     output:
         html=f"{OUT}/report/index.html",

@@ -13,9 +13,11 @@ except matrix.ConfigError as error:
 
 OUT = config["output_dir"]
 SOLVER = "build/solver/cellsim"
-CASES = matrix.expand(config)  # {case name: Case}
+CASES = matrix.expand(config)  # {case name: Case}, of every target
 DRIED = matrix.dried_states(CASES)  # {dried name: case dict}
-FIGURES = list(config["figures"])
+# The default target runs the studies without a `target`; the others (e.g. convergence) their own.
+DEFAULT_CASES = matrix.target_cases(config, CASES)
+FIGURES = matrix.target_figures(config)
 
 
 def job_resources(kind, what, default):

@@ -6,11 +6,12 @@ from analysis import claims, matrix, report
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config = sm.config
-cases = matrix.expand(config)
+every_case = matrix.expand(config)
+cases = {name: every_case[name] for name in matrix.target_cases(config, every_case)}  # the default target's
 summary = pd.read_csv(sm.input.summary)
 series = pd.read_csv(sm.input.timeseries, usecols=claims.SERIES_COLUMNS)
-base = {axis: matrix.get_key(config["base"], spec["key"]) for axis, spec in config["axes"].items()}
+base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
 rows = claims.evaluate(summary, base, series)
 pd.DataFrame(rows).to_csv(sm.output.claims, index=False)
-figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in config["figures"]}
+figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config)}
 report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT, cell_pages=sm.input.cells)

@@ -1,0 +1,32 @@
+# The convergence studies (config: studies with `target: convergence`): their runs, tables, figures
+# and page, built by `snakemake --cores 2 convergence`, never by the default target.
+CONVERGENCE_CASES = matrix.target_cases(config, CASES, "convergence")
+CONVERGENCE_FIGURES = matrix.target_figures(config, "convergence")
+
+
+rule convergence:
+    input:
+        figures=expand(f"{OUT}/figures/{{fig}}.{{ext}}", fig=CONVERGENCE_FIGURES, ext=["png", "pdf"]),
+        page=f"{OUT}/report/convergence.html",
+
+
+rule aggregate_convergence:
+    input:
+        runs=[run_file(c) for c in CONVERGENCE_CASES],
+    output:
+        timeseries=f"{OUT}/tables/convergence/timeseries.csv",
+        summary=f"{OUT}/tables/convergence/summary.csv",
+    script:
+        "../scripts/aggregate.py"
+
+
+rule convergence_page:
+    input:
+        summary=f"{OUT}/tables/convergence/summary.csv",
+        figures=expand(f"{OUT}/figures/{{fig}}.png", fig=CONVERGENCE_FIGURES),
+        code="analysis/convergence.py",
+    output:
+        html=f"{OUT}/report/convergence.html",
+        table=f"{OUT}/tables/convergence/convergence.csv",
+    script:
+        "../scripts/convergence.py"
