@@ -34,8 +34,8 @@ class Case:
 
 
 def fmt(value):
-    """A number as it appears in names: 1.0 -> 1, 0.18 -> 0.18, 2.5e-6 -> 2.5e-06."""
-    return f"{value:g}"
+    """A value as it appears in names: 1.0 -> 1, 0.18 -> 0.18, 2.5e-6 -> 2.5e-06; a name as it is."""
+    return value if isinstance(value, str) else f"{value:g}"
 
 
 def get_key(case, key):
@@ -104,7 +104,7 @@ def check(config, root="."):
             if axis not in axes:
                 raise ConfigError(f"studies.{study}.vary.{axis}: unknown axis; known: {sorted(axes)}")
             if "key" not in axes[axis]:
-                known = sorted([fmt(axes[axis]["base_value"])] + list(axes[axis]["coupled"]), key=float)
+                known = [fmt(axes[axis]["base_value"])] + list(axes[axis]["coupled"])
                 for value in spec["vary"][axis]:
                     if fmt(value) not in known:
                         raise ConfigError(f"studies.{study}.vary.{axis}: value {fmt(value)} is not one of the "
@@ -168,6 +168,8 @@ def _named(config, values, axis, spec):
 
 
 def _same(a, b):
+    if isinstance(a, str) or isinstance(b, str):
+        return a == b
     return abs(a - b) <= 1e-12 * max(1.0, abs(b))
 
 
@@ -220,7 +222,7 @@ def dried_states(cases):
 def matches(values, where):
     for axis, wanted in (where or {}).items():
         allowed = wanted if isinstance(wanted, list) else [wanted]
-        if not any(abs(values[axis] - w) <= 1e-12 * max(1.0, abs(w)) for w in allowed):
+        if not any(_same(values[axis], w) for w in allowed):
             return False
     return True
 

@@ -65,6 +65,13 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
     p.*std::get<std::optional<double> Params::*>(spec.member) = std::nullopt;
     return;
   }
+  if (is_choice(spec)) {
+    const auto& names = spec.choices;
+    const auto it = value.is_string() ? std::find(names.begin(), names.end(), value.get<std::string>()) : names.end();
+    if (it == names.end()) throw InputError(where + ": expected " + describe_range(spec));
+    p.*std::get<Choice Params::*>(spec.member) = static_cast<Choice>(it - names.begin());
+    return;
+  }
   if (!value.is_number())
     throw InputError(where + ": expected a number (" + describe_range(spec) + ", in " + spec.unit + ")" +
                      (is_optional(spec) ? " or null for auto" : ""));
@@ -81,6 +88,8 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
         using M = decltype(member);
         if constexpr (std::is_same_v<M, std::int64_t Params::*>)
           p.*member = static_cast<std::int64_t>(x);
+        else if constexpr (std::is_same_v<M, Choice Params::*>)
+          p.*member = static_cast<Choice>(x);  // not reached: choices are names (above)
         else
           p.*member = x * spec.to_si;
       },
@@ -140,6 +149,13 @@ void apply_override(json& doc, const std::string& assignment) {
   const std::string key = assignment.substr(0, eq);
   const std::string text = assignment.substr(eq + 1);
   if (!find_param(key)) unknown_key(key);
+  const std::string section = key.substr(0, key.find('.'));
+  if (!doc.is_object()) doc = json::object();
+  if (!doc.contains(section) || !doc[section].is_object()) doc[section] = json::object();
+  if (is_choice(*find_param(key))) {  // a name, as typed: --set coupling.model=pressure
+    doc[section][key.substr(key.find('.') + 1)] = text;
+    return;
+  }
   std::string lower = text;
   std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
   if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "infinity" || lower == "-infinity")
@@ -150,9 +166,6 @@ void apply_override(json& doc, const std::string& assignment) {
   } catch (const json::parse_error&) {
     throw InputError(key + " = '" + text + "': not a number (" + describe_range(*find_param(key)) + ")");
   }
-  const std::string section = key.substr(0, key.find('.'));
-  if (!doc.is_object()) doc = json::object();
-  if (!doc.contains(section) || !doc[section].is_object()) doc[section] = json::object();
   doc[section][key.substr(key.find('.') + 1)] = value;
 }
 
@@ -160,7 +173,10 @@ Params validate_case(const json& doc) {
   if (!doc.is_object()) throw InputError("case must be a JSON object with sections " + show(json(sections())));
   Params p;
   for (const auto& spec : param_specs())  // defaults first; derived keys start empty
-    if (spec.default_value) assign(spec, *spec.default_value, p);
+    if (is_choice(spec))
+      assign(spec, spec.choices.front(), p);
+    else if (spec.default_value)
+      assign(spec, *spec.default_value, p);
 
   const auto known_sections = sections();
   for (const auto& [section, body] : doc.items()) {
@@ -202,6 +218,8 @@ json case_to_json(const Params& p) {
           using M = decltype(member);
           if constexpr (std::is_same_v<M, std::int64_t Params::*>)
             value = p.*member;
+          else if constexpr (std::is_same_v<M, Choice Params::*>)
+            value = spec.choices.at(static_cast<std::size_t>(p.*member));
           else if constexpr (std::is_same_v<M, double Params::*>)
             value = to_file_unit(p.*member, spec.to_si);
           else

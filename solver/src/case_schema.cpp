@@ -16,20 +16,27 @@ ParamSpec real(std::string key, std::string unit, double to_si, double Params::*
                double def, double min, bool min_incl, double max, bool max_incl,
                std::string meaning, std::string equation) {
   return {std::move(key), std::move(unit), to_si, member, def, min, max, min_incl, max_incl,
-          std::move(meaning), std::move(equation), ""};
+          std::move(meaning), std::move(equation), "", {}};
 }
 
 ParamSpec integer(std::string key, std::int64_t Params::*member, double def, double min, double max,
                   std::string meaning, std::string equation) {
   return {std::move(key), "1", 1.0, member, def, min, max, true, true,
-          std::move(meaning), std::move(equation), ""};
+          std::move(meaning), std::move(equation), "", {}};
 }
 
 ParamSpec derived(std::string key, std::string unit, double to_si, std::optional<double> Params::*member,
                   double min, bool min_incl, double max, bool max_incl,
                   std::string meaning, std::string equation, std::string auto_rule) {
   return {std::move(key), std::move(unit), to_si, member, std::nullopt, min, max, min_incl, max_incl,
-          std::move(meaning), std::move(equation), std::move(auto_rule)};
+          std::move(meaning), std::move(equation), std::move(auto_rule), {}};
+}
+
+ParamSpec choice(std::string key, Choice Params::*member, std::vector<std::string> names, std::string meaning,
+                 std::string equation) {
+  const double last = static_cast<double>(names.size()) - 1;
+  return {std::move(key), "-", 1.0, member, 0.0, 0, last, true, true,
+          std::move(meaning), std::move(equation), "", std::move(names)};
 }
 
 std::vector<ParamSpec> build_specs() {
@@ -49,7 +56,8 @@ std::vector<ParamSpec> build_specs() {
       real("cell.wall_mass_fraction", "1", 1.0, &P::wall_mass_fraction, 0.1, 0, false, 10, true,
            "total wall mass / total fluid mass (Table 3: 1.767e-10 / 1.767e-9)", "model.md §1"),
       derived("cell.fill_gap_um", "um", kMicro, &P::fill_gap_m, 0, true, 1000, true,
-              "fluid particles fill the sphere of radius R - fill_gap", "model.md §1", "0.7 r0"),
+              "fluid particles fill the sphere of radius R - fill_gap", "model.md §1",
+              "0.7 r0 (lennard_jones), half the fluid spacing (pressure)"),
       // fluid
       real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
            "dynamic viscosity mu", "Eq 4"),
@@ -74,6 +82,10 @@ std::vector<ParamSpec> build_specs() {
       real("wall.contraction_ratio", "1", 1.0, &P::contraction_ratio, 0.4, 0, true, 1, false,
            "c = a/b: fully dried rest length is l0 (1 - c)", "Eq 21"),
       // coupling
+      choice("coupling.model", &P::coupling_model, {"lennard_jones", "pressure"},
+             "wall-fluid coupling: lennard_jones (the paper's, Eqs 12-13, 17-19) or pressure (the fluid's SPH "
+             "pressure on the wall's surface, with the exact reaction; docs/model-closures.md)",
+             "model.md §4"),
       derived("coupling.r0_um", "um", kMicro, &P::r0_m, 0, false, 1000, true,
               "wall-fluid Lennard-Jones equilibrium gap r0", "Eqs 12-13, 17-19",
               "1.8 x the largest wall-triangle circumradius (8.1 um for the default mesh)"),
@@ -171,7 +183,14 @@ bool is_optional(const ParamSpec& spec) {
   return std::holds_alternative<std::optional<double> Params::*>(spec.member);
 }
 
+bool is_choice(const ParamSpec& spec) { return std::holds_alternative<Choice Params::*>(spec.member); }
+
 std::string describe_range(const ParamSpec& spec) {
+  if (is_choice(spec)) {
+    std::string names;
+    for (const auto& name : spec.choices) names += (names.empty() ? "" : ", ") + name;
+    return "one of " + names;
+  }
   std::string r;
   if (std::isfinite(spec.min)) r += format_number(spec.min) + (spec.min_inclusive ? " <= " : " < ");
   r += "value";
@@ -185,7 +204,9 @@ std::string reference_markdown() {
   s << "| key | unit | default | allowed | meaning | equation |\n"
        "|---|---|---|---|---|---|\n";
   for (const auto& p : param_specs()) {
-    const std::string def = p.default_value ? format_number(*p.default_value) : "auto: " + p.auto_rule;
+    const std::string def = is_choice(p)        ? p.choices.front()
+                            : p.default_value ? format_number(*p.default_value)
+                                              : "auto: " + p.auto_rule;
     s << "| `" << p.key << "` | " << p.unit << " | " << def << " | " << describe_range(p) << " | "
       << p.meaning << " | " << p.equation << " |\n";
   }
@@ -202,9 +223,14 @@ std::string json_schema() {
   for (const auto& p : param_specs()) {
     const std::string section = p.key.substr(0, p.key.find('.'));
     json rule = {{"description", p.meaning + " [" + p.unit + "] (" + p.equation + ")"}};
-    rule["type"] = is_integer(p) ? json("integer") : is_optional(p) ? json({"number", "null"}) : json("number");
-    rule[p.min_inclusive ? "minimum" : "exclusiveMinimum"] = p.min;
-    rule[p.max_inclusive ? "maximum" : "exclusiveMaximum"] = p.max;
+    if (is_choice(p)) {
+      rule["type"] = "string";
+      rule["enum"] = p.choices;
+    } else {
+      rule["type"] = is_integer(p) ? json("integer") : is_optional(p) ? json({"number", "null"}) : json("number");
+      rule[p.min_inclusive ? "minimum" : "exclusiveMinimum"] = p.min;
+      rule[p.max_inclusive ? "maximum" : "exclusiveMaximum"] = p.max;
+    }
     json& s = sections[section];
     if (s.is_null()) s = {{"type", "object"}, {"additionalProperties", false}, {"properties", json::object()}};
     s["properties"][p.key.substr(p.key.find('.') + 1)] = rule;

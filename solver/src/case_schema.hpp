@@ -11,7 +11,8 @@
 
 namespace cellsim {
 
-using ParamMember = std::variant<double Params::*, std::int64_t Params::*, std::optional<double> Params::*>;
+using ParamMember =
+    std::variant<double Params::*, std::int64_t Params::*, std::optional<double> Params::*, Choice Params::*>;
 
 struct ParamSpec {
   std::string key;          // JSON path, e.g. "wall.G_MPa"
@@ -24,6 +25,7 @@ struct ParamSpec {
   std::string meaning;
   std::string equation;     // where the parameter enters the model
   std::string auto_rule;    // how an absent (or null) derived value is computed
+  std::vector<std::string> choices;  // a choice key: the names it takes (the JSON value is one of them)
 };
 
 const std::vector<ParamSpec>& param_specs();
@@ -31,6 +33,7 @@ const ParamSpec* find_param(const std::string& key);
 
 bool is_integer(const ParamSpec& spec);
 bool is_optional(const ParamSpec& spec);
+bool is_choice(const ParamSpec& spec);
 
 // "0 < value <= 1", as shown in error messages and the reference table.
 std::string describe_range(const ParamSpec& spec);

@@ -23,13 +23,22 @@ struct WallAndFluid {
 };
 
 // The geometry shared by the case and the reference cell: only size and counts matter.
+// The fill gap's default: 0.7 r0 outside the LJ layer's range; with the pressure coupling, half
+// the fluid spacing, so that the fluid's volume (one spacing around each particle) reaches the wall.
 WallAndFluid build_geometry(double radius, int n_wall, int n_fluid, std::optional<double> r0,
-                            std::optional<double> fill_gap) {
+                            std::optional<double> fill_gap, Choice coupling = kLennardJones) {
   WallAndFluid g;
   g.wall_x = fibonacci_sphere(n_wall, radius);
   g.mesh = build_wall_mesh(g.wall_x, convex_hull_triangles(g.wall_x));
   g.r0_m = r0 ? *r0 : kR0OverCircumradius * largest_circumradius(g.wall_x, g.mesh.triangles);
-  g.fill_gap_m = fill_gap ? *fill_gap : kFillGapOverR0 * g.r0_m;
+  double farthest = 0;
+  const Eigen::Matrix3Xd unit = nearest_lattice_points(n_fluid, &farthest);
+  if (fill_gap)
+    g.fill_gap_m = *fill_gap;
+  else if (coupling == kPressure)
+    g.fill_gap_m = 0.5 * radius / (farthest + 0.5);  // dx / 2 with dx = (R - dx / 2) / farthest
+  else
+    g.fill_gap_m = kFillGapOverR0 * g.r0_m;
   const double fill_radius = radius - g.fill_gap_m;
   if (!(fill_radius > 0)) {
     std::ostringstream msg;
@@ -37,8 +46,6 @@ WallAndFluid build_geometry(double radius, int n_wall, int n_fluid, std::optiona
         << " um" << (fill_gap ? "" : " (it defaults to 0.7 r0: set coupling.r0_um or cell.fill_gap_um)");
     throw InputError(msg.str());
   }
-  double farthest = 0;
-  const Eigen::Matrix3Xd unit = nearest_lattice_points(n_fluid, &farthest);
   // Largest spacing with every point inside the fill radius; a lone particle sits at the centre.
   g.fluid_spacing_m = farthest > 0 ? fill_radius / farthest * (1.0 - 1e-12) : fill_radius;
   g.fluid_x = unit * g.fluid_spacing_m;
@@ -84,7 +91,7 @@ Eigen::Matrix3Xd nearest_lattice_points(int n, double* farthest) {
 Cell build_cell(Params& p) {
   const double radius = 0.5 * p.diameter_m;
   WallAndFluid g = build_geometry(radius, static_cast<int>(p.n_wall), static_cast<int>(p.n_fluid), p.r0_m,
-                                  p.fill_gap_m);
+                                  p.fill_gap_m, p.coupling_model);
   p.r0_m = g.r0_m;
   p.fill_gap_m = g.fill_gap_m;
   if (!p.h0_m) p.h0_m = kReferenceH0_m * g.fluid_spacing_m / reference_fluid_spacing();

@@ -6,6 +6,11 @@
 
 namespace cellsim {
 
+using Choice = int;  // the index of a choice key's name (case_schema.cpp lists the names)
+
+// coupling.model (model.md §4): how the wall and the fluid push on each other.
+enum CouplingModel : Choice { kLennardJones = 0, kPressure = 1 };
+
 struct Params {
   // cell geometry and particles (model.md §1)
   double diameter_m = 0;                // D0 = 2R
@@ -14,7 +19,7 @@ struct Params {
   double turgor_Pa = 0;                 // fresh turgor P_T0 (Table 3)
   double fluid_density_kg_m3 = 0;       // rho0
   double wall_mass_fraction = 0;        // wall mass / fluid mass (Table 3: 0.1)
-  std::optional<double> fill_gap_m;     // fluid fill radius is R - fill_gap (auto: 0.7 r0)
+  std::optional<double> fill_gap_m;     // fluid fill radius is R - fill_gap (auto: 0.7 r0, or dx/2 for the pressure coupling)
 
   // fluid, Table 1
   double viscosity_Pa_s = 0;            // mu, Eq 4
@@ -30,7 +35,8 @@ struct Params {
   double contraction_stiffness_N_m = 0; // k_wc, Eq 21
   double contraction_ratio = 0;         // c = a/b, Eq 21
 
-  // wall-fluid Lennard-Jones coupling, Eqs 12-13, 17-19
+  // wall-fluid coupling: the paper's Lennard-Jones (Eqs 12-13, 17-19) or the fluid's pressure (model.md §4)
+  Choice coupling_model = kLennardJones;
   std::optional<double> r0_m;           // LJ equilibrium gap (auto: 1.8 x largest triangle circumradius)
   double repulsion_f0_N_m = 0;          // f0 for r < r0
   double attraction_f0_N_m = 0;         // f0 for r0 <= r < r_c

@@ -9,6 +9,7 @@
 #include "mass_transfer.hpp"
 #include "plates.hpp"
 #include "pressure_closure.hpp"
+#include "pressure_coupling.hpp"
 #include "threads.hpp"
 #include "wall_fluid.hpp"
 #include "wall_terms.hpp"
@@ -129,7 +130,8 @@ void Simulation::update_geometry() {
     throw NumericalFailure(msg.str());
   }
   s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
-  lj_.cutoff_m = std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
+  lj_.cutoff_m = p_.coupling_model == kPressure ? 2.0 * s_.smoothing_length_m  // the kernel's support
+                                                : std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
 
 // Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
@@ -163,14 +165,21 @@ void Simulation::wall_terms() {
   timer_.lap(Phase::Bending);
 }
 
-// Lennard-Jones coupling; also the outward push on the wall that the pressure closure and the
-// Young-Laplace check compare with the fluid pressure.
+// The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
+// push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 void Simulation::wall_fluid_terms() {
-  wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, lj_on_wall_,
-                    lj_pair_f_);
-  wall_force_ += lj_on_wall_;
+  if (p_.coupling_model == kPressure) {
+    fluid_volume_ = s_.fluid.m.cwiseQuotient(s_.fluid.rho);
+    pressure_coupling_forces(s_.fluid.x, fluid_volume_, fluid_.pressure, s_.wall.x, surface_.vertex_normal / 6.0,
+                             neighbours_.fluid_wall(), CubicSplineKernel(s_.smoothing_length_m), fluid_.force,
+                             coupling_on_wall_, lj_pair_f_, wall_pressure_scratch_, s_.fluid.v, s_.fluid.rho,
+                             s_.wall.v, fluid_.drho_dt);
+  } else {
+    wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, coupling_on_wall_, lj_pair_f_);
+  }
+  wall_force_ += coupling_on_wall_;
   // Each wall particle's LJ push along its unit normal (packed norms and divisions).
-  const double outward = (lj_on_wall_.cwiseProduct(surface_.vertex_normal).colwise().sum().array() /
+  const double outward = (coupling_on_wall_.cwiseProduct(surface_.vertex_normal).colwise().sum().array() /
                           surface_.vertex_normal.colwise().norm().array())
                              .sum();
   s_.wall_pressure_Pa = outward / surface_.area_m2;
@@ -327,7 +336,7 @@ void Simulation::restore(const State& saved) {
 }
 
 Record Simulation::record() const {
-  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, lj_on_wall_, surface_.vertex_areas(mesh_),
+  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, surface_.vertex_areas(mesh_),
                                             plate_law_, s_.plates);
   return measure(s_, mesh_, surface_, p_, eos(), load);
 }

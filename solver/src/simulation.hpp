@@ -83,9 +83,9 @@ class Simulation {
 
   // Rates at the current positions.
   FluidRates fluid_;
-  Eigen::Matrix3Xd wall_force_, lj_on_wall_;
+  Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
   Eigen::VectorXd dm_dt_;
-  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_;  // scratch, kept to avoid reallocation
+  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_, fluid_volume_, wall_pressure_scratch_;  // scratch, kept to avoid reallocation
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;

@@ -1,0 +1,37 @@
+#pragma once
+// The pressure coupling (coupling.model = pressure; model.md §4, docs/model-closures.md): the wall
+// is the boundary of the fluid's SPH sums. A fluid particle i near the wall misses the part of its
+// kernel beyond it, so the pressure sum of Eq 3 pushes it outward by V_i ∮ (P_i + P_w) W n dS (the
+// divergence theorem on the cut kernel, with P_w the pressure beyond). The wall returns exactly
+// that, from the surface each wall particle k owns (the outward area vector S_k, a third of each
+// adjacent triangle's):
+//   F_ik = -V_i (P_i + P_k) W(r_ik) S_k on fluid i, and -F_ik on wall particle k,
+// with P_k the fluid pressure at wall particle k, the Shepard average of its fluid neighbours' (as
+// Adami, Hu & Adams 2012 extrapolate it to their wall). A uniformly pressurised fluid is then at
+// rest next to the wall, and the wall carries P x its area. P_i + P_k is taken as at least 0: a
+// fluid in tension is not pulled through the wall.
+#include <Eigen/Core>
+
+#include "kernel.hpp"
+#include "neighbours.hpp"
+
+namespace cellsim {
+
+// The coefficient V_i max(P_i + P_k, 0) W(r) of S_k for one pair.
+inline double pressure_coupling_coefficient(double volume_i, double pressure_i, double pressure_k, double W) {
+  const double sum = pressure_i + pressure_k;
+  return volume_i * (sum > 0 ? sum : 0.0) * W;
+}
+
+// Adds the forces on the fluid to fluid_force and writes those on the wall to on_wall (overwritten).
+// volume: m_i / rho_i per fluid particle; pressure: P_i (Eq 7); area_vector: S_k (3 x N_w);
+// pair_W and wall_pressure are scratch (kept by the caller): W of every listed pair, P_k.
+void pressure_coupling_forces(const Eigen::Matrix3Xd& fluid_x, const Eigen::VectorXd& volume,
+                              const Eigen::VectorXd& pressure, const Eigen::Matrix3Xd& wall_x,
+                              const Eigen::Matrix3Xd& area_vector, const PairList& pairs,
+                              const CubicSplineKernel& kernel, Eigen::Matrix3Xd& fluid_force,
+                              Eigen::Matrix3Xd& on_wall, Eigen::VectorXd& pair_W, Eigen::VectorXd& wall_pressure,
+                              const Eigen::Matrix3Xd& fluid_v, const Eigen::VectorXd& rho, const Eigen::Matrix3Xd& wall_v,
+                              Eigen::VectorXd& drho_dt);
+
+}  // namespace cellsim
