@@ -22,6 +22,26 @@ def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
     return s[i - 1] + (s[i] - s[i - 1]) * (strain - e[i - 1]) / (e[i] - e[i - 1])
 
 
+SMOOTH_STRAIN = 0.01  # half-width of the strain window a smoothed stress averages over
+
+
+def window_mean(strain, values, at, half_width=SMOOTH_STRAIN):
+    """Mean of values over the records whose strain lies within +-half_width of `at` (NaN if none)."""
+    inside = np.abs(strain - at) <= half_width
+    return values[inside].mean() if inside.any() else np.nan
+
+
+def smoothed_stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
+    """Mean stress of the compression records within +-SMOOTH_STRAIN of `strain`: the stress at that
+    strain without the record-to-record ripple of the plate contact (NaN if the strain is not reached
+    by a full window)."""
+    c = ts[ts["stage"] == 1]
+    e = c["nominal_strain"].to_numpy()
+    if not len(e) or not np.nanmax(e) >= strain + SMOOTH_STRAIN:
+        return np.nan
+    return window_mean(e, c[stress_column].to_numpy(), strain)
+
+
 def with_compression_time(ts):
     """Adds compression_time_s: time since the plates started, NaN in drying (compression starts at
     the last drying record, where drying ended)."""
@@ -68,6 +88,7 @@ def summarise(ts):
         })
         for e in STRAINS:
             out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
+            out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
         force_ratio, fluid_share = load_partition(compression)
         out["load_F_over_pA"] = force_ratio
         out["load_fluid_share"] = fluid_share

@@ -11,9 +11,10 @@ Every claim names the figure it comes from, what is measured, the threshold for 
 claim whose cases are not in the run (a reduced config) is "not run"."""
 import numpy as np
 
+from analysis.aggregate import SMOOTH_STRAIN, window_mean
+
 STRAIN = 0.05  # the strain of the point values kept beside the curve verdicts
 STRESS = f"stress_kPa_at_{STRAIN:.2f}"
-SMOOTH_STRAIN = 0.01  # half-width of the strain window each curve point averages over
 GRID_STEP = 0.005
 START_STRAIN = 0.02  # curves are compared from here on: below it the plates are still making contact
 EARLY_STRAIN = 0.05  # "early" for the impulsive peaks of fast plates (Figs 11-12)
@@ -29,7 +30,7 @@ METHOD = (f"Curves are compared on a strain grid (step {GRID_STEP}) from {START_
 def _pick(summary, **values):
     rows = summary
     for axis, value in values.items():
-        rows = rows[np.isclose(rows[axis], value)]
+        rows = rows[rows[axis] == value] if isinstance(value, str) else rows[np.isclose(rows[axis], value)]
     return rows
 
 
@@ -51,7 +52,7 @@ def stress_curve(series, case, column="plate_stress_Pa"):
     if len(e) == 0 or not np.isfinite(e).any():
         return np.array([]), np.array([])
     grid = np.arange(START_STRAIN, np.nanmax(e) - SMOOTH_STRAIN + 1e-12, GRID_STEP)
-    return grid, np.array([s[np.abs(e - g) <= SMOOTH_STRAIN].mean() for g in grid])
+    return grid, np.array([window_mean(e, s, g) for g in grid])
 
 
 def _common(a, b, from_strain=START_STRAIN):

@@ -96,6 +96,13 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
                      "mouse, a slider over the snapshots of drying and compression, coloured by fluid pressure or "
                      "wall bond strain. The pages work offline, from this folder.</p>")
     parts.append(matrix_table(summary, config["axes"], cell_links))
+    parts.append("<h2>Convergence and the wall-fluid coupling</h2>")
+    parts.append("<p>How much of these curves is the particle count? The convergence studies (three resolutions, "
+                 "two time steps, and the paper's Lennard-Jones coupling against our pressure coupling) are a target "
+                 "of their own: <code>snakemake --cores 2 convergence</code> writes "
+                 "<a href='convergence.html'>convergence.html</a> beside this page, with its tables and figures (the "
+                 "link works once that target has run). What they showed is summed up under 'Convergence' in the "
+                 "model closures below.</p>")
     parts.append("<h2>Model closures</h2>")
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
     style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"

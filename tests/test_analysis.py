@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from analysis import aggregate, claims, matrix, quantities, references
+from analysis import aggregate, claims, convergence, matrix, quantities, references
 from analysis.figures import curves
 
 
@@ -33,7 +33,7 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     keep their names (hidden axes at their base value are not named)."""
     cases = matrix.expand(config)
     convergence = matrix.target_cases(config, cases, "convergence")
-    assert len(convergence) == 12  # 3 dryness x (3 levels + dt 0.5 at level 1)
+    assert len(convergence) == 21  # 3 dryness x (3 levels x 2 couplings + dt 0.5 at level 1)
     fine = cases["D150_dt0.5_G18_P200_R3_t6_v1_X0.1"]
     assert fine.case["cell"]["n_fluid"] == 24656 and fine.case["cell"]["n_wall"] == 8268
     assert fine.case["time"]["dt_ns"] == 0.5 and fine.values["dt_ns"] == 0.5 and fine.values["resolution"] == 3
@@ -186,3 +186,39 @@ def test_compression_time_counts_from_the_end_of_drying():
     out = with_compression_time(ts)["compression_time_s"].to_numpy()
     assert np.isnan(out[:3]).all()
     assert out[3:] == pytest.approx([0.1e-6, 1e-6])
+
+
+def convergence_summary(stress_of_spacing, dryness=(1.0,), levels=((3082, 2067, 1.0), (8717, 4134, 1.0), (24656, 8268, 0.5))):
+    """A summary table of the resolution study with stresses f(h) at the levels' spacings h."""
+    rows = []
+    for x in dryness:
+        for level, (n_fluid, n_wall, dt) in enumerate(levels, start=1):
+            h = n_fluid ** (-1 / 3)
+            rows.append({"case": f"R{level}_X{x}", "studies": "convergence_resolution", "dryness": x,
+                         "resolution": level, "coupling": "lennard_jones", "cell.n_fluid": n_fluid,
+                         "cell.n_wall": n_wall, "time.dt_ns": dt, "smoothed_stress_kPa_at_0.05": stress_of_spacing(h),
+                         "smoothed_stress_kPa_at_0.10": 2 * stress_of_spacing(h), "peak_force_top_uN": 1.0,
+                         "dried_V_over_V0": 1.0, "load_F_over_pA": 2.0, "load_fluid_share": 0.5})
+    return pd.DataFrame(rows)
+
+
+def test_convergence_table_gives_changes_and_the_observed_order(config):
+    # f = 100 + 5e3 h^2: second order; the changes shrink by the spacing ratio squared (2).
+    summary = convergence_summary(lambda h: 100 + 5e3 * h ** 2)
+    table = convergence.study_table(config, "convergence_resolution", summary)
+    assert list(table["resolution"]) == [1, 2, 3]
+    f = [100 + 5e3 * n ** (-2 / 3) for n in (3082, 8717, 24656)]
+    assert table["change_smoothed_stress_kPa_at_0.05"].iloc[2] == pytest.approx((f[2] - f[1]) / f[1])
+    assert table["order_smoothed_stress_kPa_at_0.05"].iloc[2] == pytest.approx(2.0, rel=1e-3)  # the two spacing ratios differ by 1e-5
+    verdict = convergence.verdicts(config, table)
+    assert list(verdict["converged"]) == ["yes"]  # 100 + 5e3 h^2 changes by < 1 % between the finest two
+
+
+def test_convergence_verdicts_say_no_and_incomplete(config):
+    oscillating = convergence_summary(lambda h: 100 * (1.2 if h < 0.04 else 1.0))  # jumps 20 % at level 3
+    assert list(convergence.verdicts(config, convergence.study_table(config, "convergence_resolution",
+                                                                     oscillating))["converged"]) == ["no"]
+    two_levels = convergence_summary(lambda h: 100.0, levels=((3082, 2067, 1.0), (8717, 4134, 1.0)))
+    table = convergence.study_table(config, "convergence_resolution", two_levels)
+    assert list(convergence.verdicts(config, table)["converged"]) == ["incomplete"]
+    assert np.isnan(convergence.observed_order(100, 110, 99, 1.41, 1.41))  # no monotone shrinking: no order

@@ -28,6 +28,8 @@ CASES = {
     "end_strain_one.json": "compression.end_strain = 1.0", "too_few_wall_particles.json": "cell.n_wall = 3",
     "fill_gap_too_large.json": "cell.fill_gap_um = 90", "contraction_ratio_one.json": "wall.contraction_ratio = 1.0",
     "description_not_string.json": "description = 42", "dt_too_large.json": "wall-spring stability limit",
+    "coupling_model_unknown.json": 'coupling.model = "springs": expected one of lennard_jones, pressure',
+    "coupling_model_number.json": "coupling.model = 1",
 }
 
 # workflow config (merged over config/config.yaml) -> what the message must name
@@ -39,6 +41,8 @@ CONFIGS = {
     "study_value_string.yaml": "half", "figure_unknown_family.yaml": "pie",
     "figure_unknown_quantity.yaml": "stres", "figure_unknown_reference.yaml": "oey2007",
     "reference_missing_file.yaml": "none.csv", "reference_bad_unit.yaml": "permille",
+    "study_unknown_level.yaml": "studies.extra.vary.resolution: value 5",
+    "study_target_all.yaml": "studies.extra.target",
 }
 
 
@@ -75,6 +79,7 @@ def test_bad_case_file(cellsim, tmp_path, name):
     (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=abc"], "drying.dryness"),
     (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=inf"], "finite"),
     (["run", "CASE", "-o", "OUT", "--set", "cell.n_wal=100"], "cell.n_wall"),
+    (["run", "CASE", "-o", "OUT", "--set", "coupling.model=springs"], "coupling.model"),
     (["run", "CASE", "-o"], "-o needs a value"),
     (["bench", "--steps", "0"], "--steps"),
     (["frobnicate"], "unknown command"),

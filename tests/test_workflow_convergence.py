@@ -1,0 +1,42 @@
+"""The convergence target end to end on reduced cells (tests/convergence_reduced.yaml): its runs, its
+table and page, its figures, and none of the default target's. Slow: about two minutes on 2 cores."""
+import subprocess
+
+import pandas as pd
+import pytest
+
+pytestmark = pytest.mark.slow
+
+
+@pytest.fixture(scope="module")
+def convergence_run(root, tmp_path_factory):
+    out = tmp_path_factory.mktemp("convergence results")
+    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", "convergence", "--configfile", "config/ci.yaml",
+                           "tests/convergence_reduced.yaml", "--config", f"output_dir={out}", "-q"], cwd=root,
+                          capture_output=True, text=True, timeout=1800)
+    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
+    return out
+
+
+def test_table_has_every_refinement_with_its_changes(convergence_run):
+    table = pd.read_csv(convergence_run / "tables" / "convergence" / "convergence.csv")
+    resolution = table[table["study"] == "convergence_resolution"]
+    assert sorted(zip(resolution["coupling"], resolution["resolution"])) == [
+        ("lennard_jones", 1), ("lennard_jones", 2), ("pressure", 1), ("pressure", 2)]
+    assert set(resolution["n_fluid"]) == {700, 1980}
+    time_step = table[table["study"] == "convergence_time_step"]
+    assert sorted(time_step["dt_ns"]) == [0.5, 1.0]
+    finer = table.dropna(subset=["change_smoothed_stress_kPa_at_0.05"])
+    assert len(finer) == 3  # one change per pair of successive refinements
+    assert table["smoothed_stress_kPa_at_0.05"].gt(0).all()
+    assert table["load_fluid_share"].between(0, 1.5).all()
+
+
+def test_page_and_figures_are_written_and_the_default_target_is_not(convergence_run):
+    page = (convergence_run / "report" / "convergence.html").read_text()
+    assert "Verdicts" in page and "Resolution convergence" in page and "Time-step convergence" in page
+    for fig in ("conv01", "conv02", "conv03", "conv04", "conv05"):
+        assert (convergence_run / "figures" / f"{fig}.png").stat().st_size > 10_000, fig
+        assert f"figures/{fig}.png" in page
+    assert not (convergence_run / "figures" / "fig01.png").exists()
+    assert not (convergence_run / "report" / "index.html").exists()
