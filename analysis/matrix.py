@@ -10,8 +10,8 @@ set after every axis's own key, and a hidden axis's value is read back from the 
 a name always says what the case runs. The dried state of a case is the same name
 without the axes that only touch the compression stage.
 
-A study with `target: NAME` is not part of the default target (`snakemake --cores 2`); it runs
-with `snakemake --cores 2 NAME`.
+A study with `target: convergence` is not part of the default target (`snakemake --cores 2`); it
+runs with `snakemake --cores 2 convergence`.
 """
 import copy
 import itertools
@@ -73,10 +73,6 @@ def target_of(config, study):
     return config["studies"][study].get("target", DEFAULT_TARGET)
 
 
-def target_names(config):
-    return sorted({target_of(config, s) for s in config["studies"]} | {DEFAULT_TARGET})
-
-
 def target_cases(config, cases, target=DEFAULT_TARGET):
     """Names of the cases a target runs: those of its studies."""
     studies = {s for s in config["studies"] if target_of(config, s) == target}
@@ -109,8 +105,6 @@ def check(config, root="."):
                     if fmt(value) not in known:
                         raise ConfigError(f"studies.{study}.vary.{axis}: value {fmt(value)} is not one of the "
                                           f"axis's values {known} (axes.{axis}.coupled names them)")
-        if target_of(config, study) == DEFAULT_TARGET and "target" in spec:
-            raise ConfigError(f"studies.{study}.target: '{DEFAULT_TARGET}' is the default target; leave target out")
     references = config.get("references", {})
     for ref, spec in references.items():
         if not (pathlib.Path(root) / spec["file"]).is_file():

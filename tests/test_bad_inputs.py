@@ -42,7 +42,7 @@ CONFIGS = {
     "figure_unknown_quantity.yaml": "stres", "figure_unknown_reference.yaml": "oey2007",
     "reference_missing_file.yaml": "none.csv", "reference_bad_unit.yaml": "permille",
     "study_unknown_level.yaml": "studies.extra.vary.resolution: value 5",
-    "study_target_all.yaml": "studies.extra.target",
+    "study_target_all.yaml": "'all' is not one of ['convergence']",
 }
 
 
