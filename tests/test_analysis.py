@@ -33,7 +33,7 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     keep their names (hidden axes at their base value are not named)."""
     cases = matrix.expand(config)
     convergence = matrix.target_cases(config, cases, "convergence")
-    assert len(convergence) == 21  # 3 dryness x (3 levels x 2 couplings + dt 0.5 at level 1)
+    assert len(convergence) == 24  # 3 dryness x 2 couplings x (3 levels + dt 0.5 at level 1)
     fine = cases["D150_dt0.5_G18_P200_R3_t6_v1_X0.1"]
     assert fine.case["cell"]["n_fluid"] == 24656 and fine.case["cell"]["n_wall"] == 8268
     assert fine.case["time"]["dt_ns"] == 0.5 and fine.values["dt_ns"] == 0.5 and fine.values["resolution"] == 3

@@ -25,9 +25,10 @@ def test_table_has_every_refinement_with_its_changes(convergence_run):
         ("lennard_jones", 1), ("lennard_jones", 2), ("pressure", 1), ("pressure", 2)]
     assert set(resolution["n_fluid"]) == {700, 1980}
     time_step = table[table["study"] == "convergence_time_step"]
-    assert sorted(time_step["dt_ns"]) == [0.5, 1.0]
+    assert sorted(zip(time_step["coupling"], time_step["dt_ns"])) == [
+        ("lennard_jones", 0.5), ("lennard_jones", 1.0), ("pressure", 0.5), ("pressure", 1.0)]
     finer = table.dropna(subset=["change_smoothed_stress_kPa_at_0.05"])
-    assert len(finer) == 3  # one change per pair of successive refinements
+    assert len(finer) == 4  # one change per pair of successive refinements
     assert table["smoothed_stress_kPa_at_0.05"].gt(0).all()
     assert table["load_fluid_share"].between(0, 1.5).all()
 
