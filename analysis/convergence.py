@@ -28,11 +28,12 @@ GROUPING_AXES = ("coupling", "dryness")  # rows are grouped by these, in this or
 
 
 def refined_axis(config, study):
-    """The axis a convergence study refines: the one it varies besides the grouping axes."""
+    """The axis a convergence study refines: the one it varies besides the grouping axes (None for a
+    comparison study, which varies only those)."""
     varied = [a for a in config["studies"][study]["vary"] if a not in GROUPING_AXES]
-    if len(varied) != 1:
+    if len(varied) > 1:
         raise ValueError(f"studies.{study}: a convergence study varies one axis besides {GROUPING_AXES}, got {varied}")
-    return varied[0]
+    return varied[0] if varied else None
 
 
 def spacing(row):
@@ -85,9 +86,21 @@ def study_table(config, study, summary):
 
 
 def tables(config, summary, target="convergence"):
-    """The convergence table of every study of the target, one frame."""
-    studies = [s for s in config["studies"] if target_of(config, s) == target]
+    """The convergence table of every refining study of the target, one frame."""
+    studies = [s for s in config["studies"] if target_of(config, s) == target and refined_axis(config, s)]
     return pd.concat([study_table(config, s, summary) for s in studies], ignore_index=True)
+
+
+def comparisons(config, summary, target="convergence"):
+    """{study: its cases' metrics} for the target's studies that compare without refining."""
+    out = {}
+    for study in config["studies"]:
+        if target_of(config, study) != target or refined_axis(config, study):
+            continue
+        rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
+        axes = [a for a in GROUPING_AXES if a in config["studies"][study]["vary"]]
+        out[study] = rows[axes + [m for m, _ in METRICS]].sort_values(axes, ascending=[True, False][:len(axes)])
+    return out
 
 
 def verdicts(config, table):
@@ -104,7 +117,8 @@ def verdicts(config, table):
             limit = LIMITS.get(axis, 0.10)
             verdict = ("incomplete" if len(group) < levels else "not reached" if not np.isfinite(worst)
                        else "yes" if worst < limit else "no")
-            out.append({"study": study, **dict(zip(group_axes, key if isinstance(key, tuple) else (key,))),
+            groups = dict(zip(group_axes, key if isinstance(key, tuple) else (key,)))
+            out.append({"study": study, **{a: groups.get(a, "") for a in GROUPING_AXES},
                         "largest stress change, two finest": worst, "limit": limit, "converged": verdict})
     return pd.DataFrame(out)
 
@@ -133,7 +147,7 @@ def readable(table):
     return frame.dropna(axis=1, how="all")
 
 
-def write_page(path, config, table, figure_files, target="convergence"):
+def write_page(path, config, table, figure_files, compared=None, target="convergence"):
     here = pathlib.Path(path).parent
     parts = ["<h1>Convergence: how much of a curve is the particle count</h1>",
              "<p>Each convergence study refines one axis: the resolution (fluid count x1, x2.83, x8 and wall count "
@@ -146,6 +160,9 @@ def write_page(path, config, table, figure_files, target="convergence"):
     for study, rows in table.groupby("study", sort=False):
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
         parts.append(_html_table(readable(rows)))
+    for study, rows in (compared or {}).items():
+        parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
+        parts.append(_html_table(rows.rename(columns=dict(METRICS))))
     parts.append("<h2>Figures</h2>")
     for fig, png in figure_files.items():
         spec = config["figures"][fig]

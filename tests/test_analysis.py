@@ -20,7 +20,7 @@ def test_matrix_deduplicates_and_shares_dried_states(config):
     assert len(matrix.target_cases(config, cases)) == 48  # the paper's studies, the default target
     baseline = cases["D150_G18_P200_t6_v1_X1"]
     assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size",
-                                     "convergence_resolution", "convergence_time_step"}
+                                     "convergence_resolution", "convergence_time_step", "coupling_comparison"}
     fast = cases["D150_G18_P200_t6_v10_X0.5"]
     assert fast.dried == cases["D150_G18_P200_t6_v1_X0.5"].dried == "D150_G18_P200_t6_X0.5"
     assert fast.case["compression"]["plate_speed_m_s"] == 10 and fast.case["drying"]["dryness"] == 0.5
@@ -33,7 +33,8 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     keep their names (hidden axes at their base value are not named)."""
     cases = matrix.expand(config)
     convergence = matrix.target_cases(config, cases, "convergence")
-    assert len(convergence) == 24  # 3 dryness x 2 couplings x (3 levels + dt 0.5 at level 1)
+    assert len(convergence) == 18  # 3 dryness x (3 LJ levels + pressure at level 1 + dt 0.5 for both)
+    assert "Cpressure_D150_G18_P200_t6_v1_X0.5" in convergence  # a name: the coupling axis takes names
     fine = cases["D150_dt0.5_G18_P200_R3_t6_v1_X0.1"]
     assert fine.case["cell"]["n_fluid"] == 24656 and fine.case["cell"]["n_wall"] == 8268
     assert fine.case["time"]["dt_ns"] == 0.5 and fine.values["dt_ns"] == 0.5 and fine.values["resolution"] == 3

@@ -21,22 +21,21 @@ def convergence_run(root, tmp_path_factory):
 def test_table_has_every_refinement_with_its_changes(convergence_run):
     table = pd.read_csv(convergence_run / "tables" / "convergence" / "convergence.csv")
     resolution = table[table["study"] == "convergence_resolution"]
-    assert sorted(zip(resolution["coupling"], resolution["resolution"])) == [
-        ("lennard_jones", 1), ("lennard_jones", 2), ("pressure", 1), ("pressure", 2)]
-    assert set(resolution["n_fluid"]) == {700, 1980}
+    assert list(resolution["resolution"]) == [1, 2] and list(resolution["n_fluid"]) == [700, 1980]
     time_step = table[table["study"] == "convergence_time_step"]
     assert sorted(zip(time_step["coupling"], time_step["dt_ns"])) == [
         ("lennard_jones", 0.5), ("lennard_jones", 1.0), ("pressure", 0.5), ("pressure", 1.0)]
     finer = table.dropna(subset=["change_smoothed_stress_kPa_at_0.05"])
-    assert len(finer) == 4  # one change per pair of successive refinements
+    assert len(finer) == 3  # one change per pair of successive refinements
     assert table["smoothed_stress_kPa_at_0.05"].gt(0).all()
     assert table["load_fluid_share"].between(0, 1.5).all()
 
 
 def test_page_and_figures_are_written_and_the_default_target_is_not(convergence_run):
     page = (convergence_run / "report" / "convergence.html").read_text()
-    assert "Verdicts" in page and "Resolution convergence" in page and "Time-step convergence" in page
-    for fig in ("conv01", "conv02", "conv03", "conv04", "conv05"):
+    for section in ("Verdicts", "Resolution convergence", "Time-step convergence", "The two wall-fluid couplings"):
+        assert section in page, section
+    for fig in ("conv01", "conv02", "conv03", "conv04"):
         assert (convergence_run / "figures" / f"{fig}.png").stat().st_size > 10_000, fig
         assert f"figures/{fig}.png" in page
     assert not (convergence_run / "figures" / "fig01.png").exists()
