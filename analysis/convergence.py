@@ -64,7 +64,7 @@ def study_table(config, study, summary):
     axis = refined_axis(config, study)
     rows = summary[summary["studies"].str.split().apply(lambda s: study in s)].copy()
     rows["refinement"] = [refinement(r, axis) for _, r in rows.iterrows()]
-    group_axes = [a for a in GROUPING_AXES if a in rows.columns and a in config["studies"][study]["vary"]]
+    group_axes = [a for a in GROUPING_AXES if a in rows.columns]
     out = []
     for _, group in rows.groupby(group_axes if len(group_axes) > 1 else group_axes[0], sort=False):
         group = group.sort_values("refinement")
@@ -119,7 +119,8 @@ def verdicts(config, table):
                        else "yes" if worst < limit else "no")
             groups = dict(zip(group_axes, key if isinstance(key, tuple) else (key,)))
             out.append({"study": study, **{a: groups.get(a, "") for a in GROUPING_AXES},
-                        "largest stress change, two finest": worst, "limit": limit, "converged": verdict})
+                        "largest stress change between the two finest [%]": 100 * worst, "limit [%]": 100 * limit,
+                        "converged": verdict})
     return pd.DataFrame(out)
 
 
