@@ -14,6 +14,7 @@
 
 #include "kernel.hpp"
 #include "neighbours.hpp"
+#include "state.hpp"
 
 namespace cellsim {
 
@@ -23,15 +24,17 @@ inline double pressure_coupling_coefficient(double volume_i, double pressure_i, 
   return volume_i * (sum > 0 ? sum : 0.0) * W;
 }
 
-// Adds the forces on the fluid to fluid_force and writes those on the wall to on_wall (overwritten).
-// volume: m_i / rho_i per fluid particle; pressure: P_i (Eq 7); area_vector: S_k (3 x N_w);
-// pair_W and wall_pressure are scratch (kept by the caller): W of every listed pair, P_k.
-void pressure_coupling_forces(const Eigen::Matrix3Xd& fluid_x, const Eigen::VectorXd& volume,
-                              const Eigen::VectorXd& pressure, const Eigen::Matrix3Xd& wall_x,
+// Scratch kept by the caller between steps (no reallocation): W of every listed pair, and per wall
+// particle the Shepard weight and P_k.
+struct PressureCouplingScratch {
+  Eigen::VectorXd pair_W, weight, wall_pressure;
+};
+
+// Adds the forces on the fluid to fluid_force and the wall term of Eq 10 to drho_dt, and writes the
+// forces on the wall to on_wall (overwritten). pressure: P_i (Eq 7); area_vector: S_k (3 x N_w).
+void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
                               const Eigen::Matrix3Xd& area_vector, const PairList& pairs,
-                              const CubicSplineKernel& kernel, Eigen::Matrix3Xd& fluid_force,
-                              Eigen::Matrix3Xd& on_wall, Eigen::VectorXd& pair_W, Eigen::VectorXd& wall_pressure,
-                              const Eigen::Matrix3Xd& fluid_v, const Eigen::VectorXd& rho, const Eigen::Matrix3Xd& wall_v,
-                              Eigen::VectorXd& drho_dt);
+                              const CubicSplineKernel& kernel, PressureCouplingScratch& scratch,
+                              Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall);
 
 }  // namespace cellsim

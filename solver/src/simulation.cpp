@@ -169,11 +169,9 @@ void Simulation::wall_terms() {
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 void Simulation::wall_fluid_terms() {
   if (p_.coupling_model == kPressure) {
-    fluid_volume_ = s_.fluid.m.cwiseQuotient(s_.fluid.rho);
-    pressure_coupling_forces(s_.fluid.x, fluid_volume_, fluid_.pressure, s_.wall.x, surface_.vertex_normal / 6.0,
-                             neighbours_.fluid_wall(), CubicSplineKernel(s_.smoothing_length_m), fluid_.force,
-                             coupling_on_wall_, lj_pair_f_, wall_pressure_scratch_, s_.fluid.v, s_.fluid.rho,
-                             s_.wall.v, fluid_.drho_dt);
+    pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal / 6.0, neighbours_.fluid_wall(),
+                             CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_scratch_, fluid_.force,
+                             fluid_.drho_dt, coupling_on_wall_);
   } else {
     wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, coupling_on_wall_, lj_pair_f_);
   }

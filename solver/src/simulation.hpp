@@ -14,6 +14,7 @@
 #include "params.hpp"
 #include "phase_timer.hpp"
 #include "plates.hpp"
+#include "pressure_coupling.hpp"
 #include "cell.hpp"
 #include "state.hpp"
 #include "surface.hpp"
@@ -85,7 +86,8 @@ class Simulation {
   FluidRates fluid_;
   Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
   Eigen::VectorXd dm_dt_;
-  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_, fluid_volume_, wall_pressure_scratch_;  // scratch, kept to avoid reallocation
+  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_;  // scratch, kept to avoid reallocation
+  PressureCouplingScratch pressure_coupling_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;

@@ -36,12 +36,12 @@ Forces coupling_forces(const Cell& cell, double h, const Eigen::VectorXd& pressu
   lists.update(cell.fluid_x, cell.wall_x, 2 * h, 2 * h);
   const WallSurface surface = wall_surface(cell.wall_x, cell.mesh);
   Forces out{Eigen::Matrix3Xd::Zero(3, n), {}, Eigen::VectorXd::Zero(n)};
-  const Eigen::VectorXd rho = Eigen::VectorXd::Constant(n, 1000.0);
-  const Eigen::VectorXd volume = Eigen::VectorXd::Constant(n, cell.fluid_mass_kg / 1000.0);
-  Eigen::VectorXd pair_W, wall_pressure;
-  pressure_coupling_forces(cell.fluid_x, volume, pressure, cell.wall_x, surface.vertex_normal / 6.0,
-                           lists.fluid_wall(), CubicSplineKernel(h), out.on_fluid, out.on_wall, pair_W, wall_pressure,
-                           fluid_v, rho, wall_v, out.drho_dt);
+  const FluidParticles fluid{cell.fluid_x, fluid_v, Eigen::VectorXd::Constant(n, cell.fluid_mass_kg),
+                             Eigen::VectorXd::Constant(n, 1000.0)};
+  const WallParticles wall{cell.wall_x, wall_v, cell.wall_mass_kg};
+  PressureCouplingScratch scratch;
+  pressure_coupling_forces(fluid, pressure, wall, surface.vertex_normal / 6.0, lists.fluid_wall(), CubicSplineKernel(h),
+                           scratch, out.on_fluid, out.drho_dt, out.on_wall);
   return out;
 }
 
@@ -80,15 +80,17 @@ TEST(PressureCoupling, UniformPressureLoadsAFlatWallWithPressureTimesArea) {
   NeighbourLists lists(0.0);
   lists.update(fluid_x, wall_x, 2 * h, 2 * h);
   const auto n = fluid_x.cols();
+  const FluidParticles fluid{fluid_x, Eigen::Matrix3Xd::Zero(3, n), Eigen::VectorXd::Constant(n, 1000.0 * dx * dx * dx),
+                             Eigen::VectorXd::Constant(n, 1000.0)};
+  const WallParticles wall{wall_x, Eigen::Matrix3Xd::Zero(3, wall_x.cols()), 1e-15};
   Eigen::Matrix3Xd on_fluid = Eigen::Matrix3Xd::Zero(3, n), on_wall;
-  Eigen::VectorXd pair_W, wall_pressure, drho = Eigen::VectorXd::Zero(n);
-  pressure_coupling_forces(fluid_x, Eigen::VectorXd::Constant(n, dx * dx * dx), Eigen::VectorXd::Constant(n, P), wall_x,
-                           area_vector, lists.fluid_wall(), CubicSplineKernel(h), on_fluid, on_wall, pair_W,
-                           wall_pressure, Eigen::Matrix3Xd::Zero(3, n), Eigen::VectorXd::Constant(n, 1000.0),
-                           Eigen::Matrix3Xd::Zero(3, wall_x.cols()), drho);
+  Eigen::VectorXd drho = Eigen::VectorXd::Zero(n);
+  PressureCouplingScratch scratch;
+  pressure_coupling_forces(fluid, Eigen::VectorXd::Constant(n, P), wall, area_vector, lists.fluid_wall(),
+                           CubicSplineKernel(h), scratch, on_fluid, drho, on_wall);
   const int centre = (n_wall_side / 2) * n_wall_side + n_wall_side / 2;
   EXPECT_NEAR(-on_wall(2, centre) / (P * a * a), 1.0, 0.03);  // pushed out, along -z
-  EXPECT_NEAR(wall_pressure[centre], P, 1e-9 * P);            // the Shepard average of a uniform field
+  EXPECT_NEAR(scratch.wall_pressure[centre], P, 1e-9 * P);    // the Shepard average of a uniform field
   EXPECT_GT(on_fluid.row(2).sum(), 0);                        // the fluid is pushed back in, along +z
   EXPECT_EQ(drho.norm(), 0.0);                                // nothing moves: no density change
 }
