@@ -8,6 +8,8 @@ import subprocess
 import pytest
 import yaml
 
+from analysis import matrix
+
 from slurm_cluster import OneNodeSlurm, available
 
 pytestmark = pytest.mark.slow
@@ -31,7 +33,7 @@ def test_ci_study_runs_through_slurm(root, tmp_path, cluster):
                           text=True, timeout=2400)
     assert done.returncode == 0, (done.stdout + done.stderr)[-4000:] + cluster.logs()
 
-    for fig in yaml.safe_load((root / "config" / "config.yaml").read_text())["figures"]:
+    for fig in matrix.target_figures(yaml.safe_load((root / "config" / "config.yaml").read_text())):
         for ext in ("png", "pdf"):
             assert (out / "figures" / f"{fig}.{ext}").stat().st_size > 10_000, fig
 
