@@ -130,7 +130,8 @@ void Simulation::update_geometry() {
     throw NumericalFailure(msg.str());
   }
   s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
-  lj_.cutoff_m = p_.coupling_model == kPressure ? 2.0 * s_.smoothing_length_m  // the kernel's support
+  // The wall-fluid pair list's cut-off (either coupling): the kernel's support, or LJ's r_c.
+  lj_.cutoff_m = p_.coupling_model == kPressure ? 2.0 * s_.smoothing_length_m
                                                 : std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
 
@@ -176,7 +177,7 @@ void Simulation::wall_fluid_terms() {
     wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, coupling_on_wall_, lj_pair_f_);
   }
   wall_force_ += coupling_on_wall_;
-  // Each wall particle's LJ push along its unit normal (packed norms and divisions).
+  // Each wall particle's push from the fluid along its unit normal (packed norms and divisions).
   const double outward = (coupling_on_wall_.cwiseProduct(surface_.vertex_normal).colwise().sum().array() /
                           surface_.vertex_normal.colwise().norm().array())
                              .sum();
