@@ -13,7 +13,8 @@ import pathlib
 import numpy as np
 import pandas as pd
 
-from analysis.matrix import fmt, target_of
+from analysis.matrix import target_of
+from analysis.report import frame_table, write_page
 
 # (summary column, heading): what each case reports.
 METRICS = [("smoothed_stress_kPa_at_0.05", "stress at strain 0.05 [kPa]"),
@@ -124,16 +125,6 @@ def verdicts(config, table):
     return pd.DataFrame(out)
 
 
-def _html_table(frame):
-    def cell(v):
-        if isinstance(v, float):
-            return "" if math.isnan(v) else f"{v:.4g}"
-        return html.escape(fmt(v) if not isinstance(v, (int, np.integer)) else str(v))
-    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
-    body = "".join("<tr>" + "".join(f"<td>{cell(v)}</td>" for v in row) + "</tr>" for row in frame.itertuples(index=False))
-    return f"<table><tr>{head}</tr>{body}</table>"
-
-
 def readable(table):
     """The table with headings a reader understands and changes in %."""
     frame = table.drop(columns=["study", "refined_axis", "case"]).copy()
@@ -157,20 +148,16 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "
              "Criteria: a stress change below 10 % between the two finest levels, below 3 % between the two time "
              "steps. The load partition (F / (p A_c) and the fluid's share) is explained in docs/model.md §8.</p>"]
-    parts.append("<h2>Verdicts</h2>" + _html_table(verdicts(config, table)))
+    parts.append("<h2>Verdicts</h2>" + frame_table(verdicts(config, table)))
     for study, rows in table.groupby("study", sort=False):
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(_html_table(readable(rows)))
+        parts.append(frame_table(readable(rows)))
     for study, rows in (compared or {}).items():
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(_html_table(rows.rename(columns=dict(METRICS))))
+        parts.append(frame_table(rows.rename(columns=dict(METRICS))))
     parts.append("<h2>Figures</h2>")
     for fig, png in figure_files.items():
         spec = config["figures"][fig]
         parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
                      f"<figcaption><b>{fig}.</b> {html.escape(spec['title'])}.</figcaption></figure>")
-    style = ("body{font-family:sans-serif;max-width:1200px;margin:auto;padding:1em}"
-             "table{border-collapse:collapse;font-size:78%}td,th{border:1px solid #ccc;padding:2px 5px}"
-             "img{max-width:100%}figure{margin:2em 0}")
-    pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>cellsim {target}</title>"
-                                  f"<style>{style}</style></head><body>{''.join(parts)}</body></html>\n")
+    write_page(path, f"cellsim {target}", parts)

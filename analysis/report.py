@@ -10,6 +10,34 @@ import markdown
 from analysis.matrix import figure_cases
 
 
+STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
+         "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
+         "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
+         ".disagree td.verdict{color:#b00}.not-run td.verdict{color:grey}"
+         ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
+
+
+def write_page(path, title, parts):
+    """An HTML page of the report: its parts (HTML strings) in order, with the report's style."""
+    pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>{html.escape(title)}"
+                                  f"</title><style>{STYLE}</style></head><body>{''.join(parts)}</body></html>\n")
+
+
+def cell_text(value):
+    """A table cell's text: numbers to 4 significant digits, NaN as empty, names as they are."""
+    if isinstance(value, float):
+        return "" if value != value else f"{value:.4g}"
+    return html.escape(str(value))
+
+
+def frame_table(frame):
+    """A pandas frame as an HTML table, headings from its columns."""
+    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
+    body = "".join("<tr>" + "".join(f"<td>{cell_text(v)}</td>" for v in row) + "</tr>"
+                   for row in frame.itertuples(index=False))
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
 def caption(config, fig, cases):
     spec = config["figures"][fig]
     names = figure_cases(config, fig, cases)
@@ -51,7 +79,7 @@ def matrix_table(summary, axes, cell_links=None):
     head = ("<th>3-D</th>" if links else "") + "".join(f"<th>{html.escape(c)}</th>" for c in columns)
     body = []
     for _, row in summary[columns].iterrows():
-        cells = "".join(f"<td>{v:.4g}</td>" if isinstance(v, float) else f"<td>{html.escape(str(v))}</td>" for v in row)
+        cells = "".join(f"<td>{cell_text(v)}</td>" for v in row)
         if links:
             link = links.get(row["case"])
             cells = (f"<td><a href='{html.escape(link)}'>view</a></td>" if link else "<td></td>") + cells
@@ -105,10 +133,4 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
                  "model closures below.</p>")
     parts.append("<h2>Model closures</h2>")
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
-    style = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
-             "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
-             "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
-             ".disagree td.verdict{color:#b00}.not-run td.verdict{color:grey}"
-             ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
-    pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>cellsim reproduction report"
-                                  f"</title><style>{style}</style></head><body>{''.join(parts)}</body></html>\n")
+    write_page(path, "cellsim reproduction report", parts)

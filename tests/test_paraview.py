@@ -25,8 +25,13 @@ def test_paraview_reads_and_renders_both_sidecars(cellsim, tmp_path):
     subprocess.run([cellsim, "run", str(case), "-o", str(tmp_path / "run.h5"), "--quiet"], check=True,
                    capture_output=True)
     png = tmp_path / "paraview.png"
-    done = subprocess.run(["xvfb-run", "-a", "pvbatch", str(HERE / "paraview_check.py"), str(tmp_path / "run"),
-                           str(png)], capture_output=True, text=True, timeout=300)
+    command = ["xvfb-run", "-a", "pvbatch", str(HERE / "paraview_check.py"), str(tmp_path / "run"), str(png)]
+    done = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    if done.returncode != 0 and "CreateAWindow" in done.stdout + done.stderr:
+        # The virtual display was not ready for a window (seen once in CI on a busy machine, SIGABRT in
+        # vtkXOpenGLRenderWindow::CreateAWindow): a second display, once. A reading or rendering
+        # failure of our files shows elsewhere in the trace and fails at once.
+        done = subprocess.run(command, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, (done.stdout + done.stderr)[-3000:]
     line = next(line for line in done.stdout.splitlines() if line.startswith("PARAVIEW_READ "))
     read = json.loads(line.split(" ", 1)[1])

@@ -5,7 +5,7 @@ namespace cellsim {
 // Pass 1: W of every pair and the Shepard sums of P_k; pass 2: the pair forces and the wall term
 // of the continuity equation, rho_i sum_k W_ik (v_i - v_k) . S_k.
 void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
-                              const Eigen::Matrix3Xd& area_vector, const PairList& pairs,
+                              const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
                               const CubicSplineKernel& kernel, PressureCouplingScratch& scratch,
                               Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall) {
   auto& W = scratch.pair_W;
@@ -32,10 +32,11 @@ void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd
     double divergence = 0;
     for (int q = pairs.offset[static_cast<std::size_t>(i)]; q < pairs.offset[static_cast<std::size_t>(i) + 1]; ++q) {
       const int k = pairs.index[static_cast<std::size_t>(q)];
-      const Eigen::Vector3d fik = -pressure_coupling_coefficient(volume_i, pressure[i], P_k[k], W[q]) * area_vector.col(k);
+      const Eigen::Vector3d S_k = vertex_normal.col(k) / 6.0;
+      const Eigen::Vector3d fik = -pressure_coupling_coefficient(volume_i, pressure[i], P_k[k], W[q]) * S_k;
       force_i += fik;
       on_wall.col(k) -= fik;
-      divergence += W[q] * (fluid.v.col(i) - wall.v.col(k)).dot(area_vector.col(k));
+      divergence += W[q] * (fluid.v.col(i) - wall.v.col(k)).dot(S_k);
     }
     fluid_force.col(i) += force_i;
     drho_dt[i] += fluid.rho[i] * divergence;

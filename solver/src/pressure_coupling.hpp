@@ -31,9 +31,10 @@ struct PressureCouplingScratch {
 };
 
 // Adds the forces on the fluid to fluid_force and the wall term of Eq 10 to drho_dt, and writes the
-// forces on the wall to on_wall (overwritten). pressure: P_i (Eq 7); area_vector: S_k (3 x N_w).
+// forces on the wall to on_wall (overwritten). pressure: P_i (Eq 7); vertex_normal: the sum of each
+// wall particle's adjacent triangles' area normals (surface.hpp; |N| = twice the area), so S_k = N_k / 6.
 void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
-                              const Eigen::Matrix3Xd& area_vector, const PairList& pairs,
+                              const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
                               const CubicSplineKernel& kernel, PressureCouplingScratch& scratch,
                               Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall);
 

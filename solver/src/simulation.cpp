@@ -170,7 +170,7 @@ void Simulation::wall_terms() {
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 void Simulation::wall_fluid_terms() {
   if (p_.coupling_model == kPressure) {
-    pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal / 6.0, neighbours_.fluid_wall(),
+    pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal, neighbours_.fluid_wall(),
                              CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_scratch_, fluid_.force,
                              fluid_.drho_dt, coupling_on_wall_);
   } else {

@@ -40,7 +40,7 @@ Forces coupling_forces(const Cell& cell, double h, const Eigen::VectorXd& pressu
                              Eigen::VectorXd::Constant(n, 1000.0)};
   const WallParticles wall{cell.wall_x, wall_v, cell.wall_mass_kg};
   PressureCouplingScratch scratch;
-  pressure_coupling_forces(fluid, pressure, wall, surface.vertex_normal / 6.0, lists.fluid_wall(), CubicSplineKernel(h),
+  pressure_coupling_forces(fluid, pressure, wall, surface.vertex_normal, lists.fluid_wall(), CubicSplineKernel(h),
                            scratch, out.on_fluid, out.drho_dt, out.on_wall);
   return out;
 }
@@ -76,7 +76,8 @@ TEST(PressureCoupling, UniformPressureLoadsAFlatWallWithPressureTimesArea) {
   q = 0;
   for (int i = 0; i < n_wall_side; ++i)
     for (int j = 0; j < n_wall_side; ++j) wall_x.col(q++) << (i - n_wall_side / 2) * a, (j - n_wall_side / 2) * a, 0.0;
-  const Eigen::Matrix3Xd area_vector = Eigen::Vector3d(0, 0, -a * a).replicate(1, wall_x.cols());  // outward: -z
+  // Outward (-z) area normals: a flat vertex owns a x a, its six triangles' normals sum to 6 a^2.
+  const Eigen::Matrix3Xd vertex_normal = Eigen::Vector3d(0, 0, -6 * a * a).replicate(1, wall_x.cols());
   NeighbourLists lists(0.0);
   lists.update(fluid_x, wall_x, 2 * h, 2 * h);
   const auto n = fluid_x.cols();
@@ -86,7 +87,7 @@ TEST(PressureCoupling, UniformPressureLoadsAFlatWallWithPressureTimesArea) {
   Eigen::Matrix3Xd on_fluid = Eigen::Matrix3Xd::Zero(3, n), on_wall;
   Eigen::VectorXd drho = Eigen::VectorXd::Zero(n);
   PressureCouplingScratch scratch;
-  pressure_coupling_forces(fluid, Eigen::VectorXd::Constant(n, P), wall, area_vector, lists.fluid_wall(),
+  pressure_coupling_forces(fluid, Eigen::VectorXd::Constant(n, P), wall, vertex_normal, lists.fluid_wall(),
                            CubicSplineKernel(h), scratch, on_fluid, drho, on_wall);
   const int centre = (n_wall_side / 2) * n_wall_side + n_wall_side / 2;
   EXPECT_NEAR(-on_wall(2, centre) / (P * a * a), 1.0, 0.03);  // pushed out, along -z
