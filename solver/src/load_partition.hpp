@@ -10,15 +10,13 @@
 namespace cellsim {
 
 struct LoadPartition {
-  double contact_area_top_m2 = 0;  // area owned by the wall particles Eq 22 pushes from the top plate
-  double fluid_push_N = 0;         // upward coupling force of the fluid on those particles
-  double wall_push_N = 0;          // upward bond + bending + damping force on them
+  double fluid_push_N = 0;  // upward coupling force of the fluid on the wall particles Eq 22 pushes from the top plate
+  double wall_push_N = 0;   // upward bond + bending + damping force on them
 };
 
 // wall_force: every force on the wall particles at the current state (coupling and plates included);
-// coupling_on_wall: the part of it from the fluid; vertex_area: the area each wall particle owns.
+// coupling_on_wall: the part of it from the fluid.
 LoadPartition top_plate_load(const Eigen::Matrix3Xd& wall_x, const Eigen::Matrix3Xd& wall_force,
-                             const Eigen::Matrix3Xd& coupling_on_wall, const Eigen::VectorXd& vertex_area,
-                             const PlateLaw& law, const Plates& plates);
+                             const Eigen::Matrix3Xd& coupling_on_wall, const PlateLaw& law, const Plates& plates);
 
 }  // namespace cellsim

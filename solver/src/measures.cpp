@@ -114,13 +114,14 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   // Contact area: the area owned by the wall particles that Eq 22 pushes (plates.hpp decides).
   const Eigen::VectorXd vertex_area = surface.vertex_areas(mesh);
   const PlateLaw law = plate_law(p);
-  double contact_area = 0;
+  double contact_area = 0, contact_area_top = 0;
   int contacts = 0;
   for (Eigen::Index k = 0; k < w.size(); ++k) {
-    if (plate_overlap(w.x.col(k), law, pl).touches()) {
-      contact_area += vertex_area[k];
-      ++contacts;
-    }
+    const PlateOverlap overlap = plate_overlap(w.x.col(k), law, pl);
+    if (!overlap.touches()) continue;
+    contact_area += vertex_area[k];
+    ++contacts;
+    if (overlap.top_m > 0) contact_area_top += vertex_area[k];
   }
   r.contact_area_m2 = contact_area;
   r.contact_count = contacts;
@@ -129,12 +130,12 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
   r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
   r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
-  r.contact_area_top_m2 = load.contact_area_top_m2;
-  r.pressure_load_N = r.mean_pressure_Pa * load.contact_area_top_m2;
+  r.contact_area_top_m2 = contact_area_top;
+  r.pressure_load_N = r.mean_pressure_Pa * contact_area_top;
   r.load_fluid_N = load.fluid_push_N;
   r.load_wall_N = load.wall_push_N;
   // The top plate's force over the top plate's own contact (the bottom one carries the same load).
-  r.contact_stress_Pa = load.contact_area_top_m2 > 0 ? pl.force_top_N / load.contact_area_top_m2 : kNaN;
+  r.contact_stress_Pa = contact_area_top > 0 ? pl.force_top_N / contact_area_top : kNaN;
   return r;
 }
 

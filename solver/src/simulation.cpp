@@ -335,8 +335,7 @@ void Simulation::restore(const State& saved) {
 }
 
 Record Simulation::record() const {
-  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, surface_.vertex_areas(mesh_),
-                                            plate_law_, s_.plates);
+  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, plate_law_, s_.plates);
   return measure(s_, mesh_, surface_, p_, eos(), load);
 }
 
