@@ -14,7 +14,7 @@ import numpy as np
 import pandas as pd
 
 from analysis.matrix import target_of
-from analysis.report import frame_table, write_page
+from analysis import report
 
 # (summary column, heading): what each case reports.
 METRICS = [("smoothed_stress_kPa_at_0.05", "stress at strain 0.05 [kPa]"),
@@ -148,16 +148,16 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "
              "Criteria: a stress change below 10 % between the two finest levels, below 3 % between the two time "
              "steps. The load partition (F / (p A_c) and the fluid's share) is explained in docs/model.md §8.</p>"]
-    parts.append("<h2>Verdicts</h2>" + frame_table(verdicts(config, table)))
+    parts.append("<h2>Verdicts</h2>" + report.frame_table(verdicts(config, table)))
     for study, rows in table.groupby("study", sort=False):
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(frame_table(readable(rows)))
+        parts.append(report.frame_table(readable(rows)))
     for study, rows in (compared or {}).items():
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(frame_table(rows.rename(columns=dict(METRICS))))
+        parts.append(report.frame_table(rows.rename(columns=dict(METRICS))))
     parts.append("<h2>Figures</h2>")
     for fig, png in figure_files.items():
         spec = config["figures"][fig]
         parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
                      f"<figcaption><b>{fig}.</b> {html.escape(spec['title'])}.</figcaption></figure>")
-    write_page(path, f"cellsim {target}", parts)
+    report.write_page(path, f"cellsim {target}", parts)

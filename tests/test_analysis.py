@@ -215,6 +215,18 @@ def test_convergence_table_gives_changes_and_the_observed_order(config):
     assert list(verdict["converged"]) == ["yes"]  # 100 + 5e3 h^2 changes by < 1 % between the finest two
 
 
+def test_convergence_page_shows_verdicts_tables_and_figures(config, tmp_path):
+    summary = convergence_summary(lambda h: 100 + 5e3 * h ** 2, dryness=(1.0, 0.1))
+    table = convergence.study_table(config, "convergence_resolution", summary)
+    (tmp_path / "report").mkdir()
+    convergence.write_page(tmp_path / "report" / "convergence.html", config, table,
+                           {"conv01": str(tmp_path / "figures" / "conv01.png")}, {"coupling_comparison": summary.head(2)})
+    page = (tmp_path / "report" / "convergence.html").read_text()
+    for text in ("Verdicts", "Resolution convergence", "The two wall-fluid couplings", "../figures/conv01.png",
+                 "<td>yes</td>", "stress at strain 0.05 [kPa]"):
+        assert text in page, text
+
+
 def test_convergence_verdicts_say_no_and_incomplete(config):
     oscillating = convergence_summary(lambda h: 100 * (1.2 if h < 0.04 else 1.0))  # jumps 20 % at level 3
     assert list(convergence.verdicts(config, convergence.study_table(config, "convergence_resolution",
