@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "owned_spans.hpp"
 #include "surface.hpp"  // the triangle normals, computed once a step
 #include "wall_mesh.hpp"
 
@@ -17,13 +18,20 @@ class Bending {
 
   double energy(const Eigen::Matrix3Xd& x) const;
   // Adds -grad E_b to force (3 x N_w), with the triangle normals of x.
-  void add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, Eigen::Matrix3Xd& force) const;
+  void add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, int threads,
+                  Eigen::Matrix3Xd& force) const;
   void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;  // computes the normals
 
  private:
+  void add_hinges(const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const;
+  void add_triangle_forces(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
+                           Eigen::Matrix3Xd& force) const;
+
   const WallMesh& mesh_;
   std::vector<double> weight_;  // k_b L_n per hinge
   mutable Eigen::Matrix3Xd triangle_sum_;  // scratch of add_forces: weighted p summed per triangle
+  // Each thread's triangles and particles, and the hinges and triangles that touch them (owned_spans.hpp).
+  mutable OwnedSpans hinge_spans_, triangle_spans_;
 };
 
 }  // namespace cellsim

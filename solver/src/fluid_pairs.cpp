@@ -105,6 +105,17 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
   }
 }
 
+// The blocks' sums, added in block order, for particles [begin, end).
+void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
+  const Eigen::Index count = end - begin;
+  out.force.middleCols(begin, count) = out.thread_sums[0].block(0, begin, 3, count);
+  out.drho_dt.segment(begin, count) = out.thread_sums[0].row(3).segment(begin, count).transpose();
+  for (std::size_t t = 1; t < out.thread_sums.size(); ++t) {
+    out.force.middleCols(begin, count) += out.thread_sums[t].block(0, begin, 3, count);
+    out.drho_dt.segment(begin, count) += out.thread_sums[t].row(3).segment(begin, count).transpose();
+  }
+}
+
 }  // namespace
 
 // Each pair of the half list is visited once and applied to both particles, with the per-pair
@@ -124,28 +135,18 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
       fill_records(f, eos, n * t / threads, n * (t + 1) / threads, out);
       out.thread_sums[static_cast<std::size_t>(t)].setZero(kSum, n + 1);
     }
-#ifdef _OPENMP
-#pragma omp barrier  // every record is written before any block reads them
-#endif
+    if (stride > 1) wait_for_all_threads();  // every record is written before any block reads them
     for (int t = first; t < threads; t += stride)
       add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), first_row[t], first_row[t + 1],
                      out.thread_sums[static_cast<std::size_t>(t)].data());
   };
-  if (threads == 1) {
+  if (threads == 1)
     run_blocks(0, 1);
-  } else {
-    // Threads bound to cores (spread): unbound, the scheduler often stacked them on one core.
-#ifdef _OPENMP
-#pragma omp parallel num_threads(threads) proc_bind(spread)
-#endif
-    run_blocks(thread_index(), team_size());
-  }
-  out.force = out.thread_sums[0].topRows(3).leftCols(n);
-  out.drho_dt = out.thread_sums[0].row(3).head(n).transpose();
-  for (std::size_t t = 1; t < out.thread_sums.size(); ++t) {
-    out.force += out.thread_sums[t].topRows(3).leftCols(n);
-    out.drho_dt += out.thread_sums[t].row(3).head(n).transpose();
-  }
+  else
+    run_on_threads(threads, run_blocks);
+  out.force.resize(3, n);
+  out.drho_dt.resize(n);
+  for_blocks(threads, n, [&](Eigen::Index begin, Eigen::Index end) { add_thread_sums(begin, end, out); });
 }
 
 }  // namespace cellsim

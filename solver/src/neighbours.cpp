@@ -4,8 +4,14 @@
 #include <array>
 #include <cmath>
 
+#include "threads.hpp"
+
 namespace cellsim {
 namespace {
+
+double moved2(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& then, Eigen::Index begin, Eigen::Index end) {
+  return (now.middleCols(begin, end - begin) - then.middleCols(begin, end - begin)).colwise().squaredNorm().maxCoeff();
+}
 
 // Uniform grid over a bounding box; particles binned by counting sort (deterministic order).
 constexpr double kMaxCellsPerSide = 200;
@@ -69,21 +75,27 @@ struct CellGrid {
   }
 };
 
-double max_displacement(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& then) {
+// The largest distance any particle has moved since the build (one square root), in fixed blocks.
+double max_displacement(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& then, int threads) {
   if (now.cols() != then.cols()) return INFINITY;
-  return now.cols() ? std::sqrt((now - then).colwise().squaredNorm().maxCoeff()) : 0.0;  // one square root
+  if (now.cols() == 0) return 0.0;
+  const double max2 = reduce_blocks<double>(
+      threads, now.cols(),
+      [&](Eigen::Index begin, Eigen::Index end) { return moved2(now, then, begin, end); },
+      [](double a, double b) { return std::max(a, b); });
+  return std::sqrt(max2);
 }
 
 }  // namespace
 
 bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
-                            double wall_fluid_cutoff) {
+                            double wall_fluid_cutoff, int threads) {
   fluid_cutoff_ = fluid_cutoff;
   wall_fluid_cutoff_ = wall_fluid_cutoff;
   if (!stale_) {
     // A pair now within the cut-off was within cut-off + 2 max_disp at the build.
-    const double moved = 2.0 * std::max(max_displacement(fluid_x, fluid_at_build_),
-                                        max_displacement(wall_x, wall_at_build_));
+    const double moved = 2.0 * std::max(max_displacement(fluid_x, fluid_at_build_, threads),
+                                        max_displacement(wall_x, wall_at_build_, threads));
     if (fluid_cutoff + moved <= list_fluid_cutoff_ && wall_fluid_cutoff + moved <= list_wall_cutoff_) return false;
   }
   build(fluid_x, wall_x);

@@ -24,9 +24,9 @@ class NeighbourLists {
  public:
   explicit NeighbourLists(double skin_m) : skin_(skin_m) {}
 
-  // Rebuilds if needed for these cut-offs; returns true if it rebuilt.
+  // Rebuilds if needed for these cut-offs; returns true if it rebuilt. threads: for the check.
   bool update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
-              double wall_fluid_cutoff);
+              double wall_fluid_cutoff, int threads = 1);
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
 

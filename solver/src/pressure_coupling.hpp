@@ -12,6 +12,7 @@
 // fluid in tension is not pulled through the wall.
 #include <Eigen/Core>
 
+#include "block_sums.hpp"
 #include "kernel.hpp"
 #include "neighbours.hpp"
 #include "state.hpp"
@@ -24,10 +25,13 @@ inline double pressure_coupling_coefficient(double volume_i, double pressure_i, 
   return volume_i * (sum > 0 ? sum : 0.0) * W;
 }
 
-// Scratch kept by the caller between steps (no reallocation): W of every listed pair, and per wall
-// particle the Shepard weight and P_k.
+// Scratch kept by the caller between steps (no reallocation): W of every listed pair; per wall
+// particle the Shepard weight (row 0) and P_k (row 1); per-thread sums (block_sums.hpp).
 struct PressureCouplingScratch {
-  Eigen::VectorXd pair_W, weight, wall_pressure;
+  Eigen::VectorXd pair_W;
+  Eigen::Matrix2Xd shepard;
+  BlockSums<Eigen::Matrix2Xd> shepard_sums;
+  BlockSums<Eigen::Matrix3Xd> force_sums;
 };
 
 // Adds the forces on the fluid to fluid_force and the wall term of Eq 10 to drho_dt, and writes the
@@ -35,7 +39,7 @@ struct PressureCouplingScratch {
 // wall particle's adjacent triangles' area normals (surface.hpp; |N| = twice the area), so S_k = N_k / 6.
 void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
                               const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
-                              const CubicSplineKernel& kernel, PressureCouplingScratch& scratch,
+                              const CubicSplineKernel& kernel, int threads, PressureCouplingScratch& scratch,
                               Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall);
 
 }  // namespace cellsim

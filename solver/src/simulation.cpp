@@ -1,6 +1,7 @@
 #include "simulation.hpp"
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "containment.hpp"
@@ -39,6 +40,91 @@ double wall_spring_limit(const WallMesh& mesh, const Params& p, double wall_mass
 template <class Derived>
 bool all_finite(const Eigen::DenseBase<Derived>& a) {
   return (a.derived().array() - a.derived().array()).sum() == 0.0;
+}
+
+// The per-particle loops of a step, for particles [begin, end) (one block of for_blocks). Functions
+// of their own, with the scalars as value parameters: inside a lambda that other threads also run,
+// the compiler would re-read them after every store and not vectorise.
+
+// Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
+void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double area_m2, double Lp_m_per_s_Pa,
+                double osmotic_Pa, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& dm_dt,
+                Eigen::VectorXd& drho_dt) {
+  const int n = static_cast<int>(f.size());
+  for (Eigen::Index i = begin; i < end; ++i) {
+    dm_dt[i] = mass_rate(area_m2, Lp_m_per_s_Pa, f.rho[i], n, pressure[i], osmotic_Pa);
+    drho_dt[i] = density_rate(drho_dt[i], f.rho[i], f.m[i], dm_dt[i]);
+  }
+}
+
+// Half a kick of the fluid: velocity by force / mass, density and mass by their rates.
+void kick_fluid(double half_dt, const Eigen::Matrix3Xd& force, const Eigen::VectorXd& drho_dt,
+                const Eigen::VectorXd& dm_dt, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& kick_factor,
+                FluidParticles& f) {
+  const Eigen::Index count = end - begin;
+  kick_factor.segment(begin, count) = half_dt / f.m.segment(begin, count).array();  // packed divisions
+  for (Eigen::Index i = begin; i < end; ++i) f.v.col(i) += kick_factor[i] * force.col(i);
+  f.rho.segment(begin, count) += half_dt * drho_dt.segment(begin, count);
+  f.m.segment(begin, count) += half_dt * dm_dt.segment(begin, count);
+}
+
+// y *= factor, for entries [begin, end).
+void scale(double factor, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& y) {
+  y.segment(begin, end - begin) *= factor;
+}
+
+// y += factor * rate, for columns [begin, end) (a wall kick, or a drift).
+void move(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
+  y.middleCols(begin, end - begin) += factor * rate.middleCols(begin, end - begin);
+}
+
+// The fastest fluid particle and the one with the largest acceleration (squared), for the CFL limits.
+struct Fastest {
+  double v2 = 0, a2 = 0;
+  Eigen::Index i_v = 0, i_a = 0;
+  // Folds a later block in: the first particle wins a tie, as in one pass.
+  Fastest faster(const Fastest& later) const {
+    Fastest f = *this;
+    if (later.v2 > f.v2) f.v2 = later.v2, f.i_v = later.i_v;
+    if (later.a2 > f.a2) f.a2 = later.a2, f.i_a = later.i_a;
+    return f;
+  }
+};
+
+Fastest fastest_fluid(const FluidParticles& f, const Eigen::Matrix3Xd& force, Eigen::Index begin, Eigen::Index end) {
+  Fastest r;
+  r.i_v = r.i_a = begin;
+  for (Eigen::Index i = begin; i < end; ++i) {
+    const double v2 = f.v.col(i).squaredNorm();
+    const double a2 = force.col(i).squaredNorm() / (f.m[i] * f.m[i]);
+    if (v2 > r.v2) r.v2 = v2, r.i_v = i;
+    if (a2 > r.a2) r.a2 = a2, r.i_a = i;
+  }
+  return r;
+}
+
+// True if every position, velocity, density and mass of particles [begin, end) is finite, and every
+// density and mass positive (one packed pass per array: see all_finite).
+bool fluid_is_sound(const FluidParticles& f, Eigen::Index begin, Eigen::Index end) {
+  const Eigen::Index count = end - begin;
+  return all_finite(f.x.middleCols(begin, count)) && all_finite(f.v.middleCols(begin, count)) &&
+         all_finite(f.rho.segment(begin, count)) && all_finite(f.m.segment(begin, count)) &&
+         f.rho.segment(begin, count).minCoeff() > 0 && f.m.segment(begin, count).minCoeff() > 0;
+}
+
+bool wall_is_finite(const WallParticles& w, Eigen::Index begin, Eigen::Index end) {
+  return all_finite(w.x.middleCols(begin, end - begin)) && all_finite(w.v.middleCols(begin, end - begin));
+}
+
+// Adds the coupling's forces on wall particles [begin, end) to their forces, and returns the sum of
+// their push along their unit normals (packed norms and divisions), for the wall pressure.
+double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& vertex_normal, Eigen::Index begin,
+                    Eigen::Index end, Eigen::Matrix3Xd& wall_force) {
+  const Eigen::Index count = end - begin;
+  wall_force.middleCols(begin, count) += on_wall.middleCols(begin, count);
+  return (on_wall.middleCols(begin, count).cwiseProduct(vertex_normal.middleCols(begin, count)).colwise().sum().array() /
+          vertex_normal.middleCols(begin, count).colwise().norm().array())
+      .sum();
 }
 
 }  // namespace
@@ -110,7 +196,10 @@ void Simulation::compute_rates() {
   fluid_terms();
   mass_transfer();
   timer_.lap(Phase::MassTransfer);
-  wall_force_.setZero(3, s_.wall.size());
+  wall_force_.resize(3, s_.wall.size());
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    wall_force_.middleCols(begin, end - begin).setZero();
+  });
   wall_terms();
   wall_fluid_terms();
   timer_.lap(Phase::WallFluid);
@@ -122,7 +211,7 @@ void Simulation::compute_rates() {
 // A wall that encloses no volume has collapsed or turned inside out: Eq 6 has no D, so the run stops
 // here (a non-finite volume comes from a non-finite position, which check_state names).
 void Simulation::update_geometry() {
-  surface_.update(s_.wall.x, mesh_);
+  surface_.update(s_.wall.x, mesh_, threads_);
   if (surface_.volume_m3 <= 0) {
     std::ostringstream msg;
     msg << where() << ": the wall encloses a volume of " << surface_.volume_m3
@@ -138,7 +227,7 @@ void Simulation::update_geometry() {
 // Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
 void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
-  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m);
+  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_);
   timer_.lap(Phase::Neighbours);
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
   timer_.lap(Phase::FluidPairs);
@@ -146,23 +235,21 @@ void Simulation::fluid_terms() {
 
 // Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
 void Simulation::mass_transfer() {
-  auto& f = s_.fluid;
-  dm_dt_.resize(f.size());
-  const int n = static_cast<int>(f.size());
+  dm_dt_.resize(s_.fluid.size());
   const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
-  for (Eigen::Index i = 0; i < f.size(); ++i) {
-    dm_dt_[i] = mass_rate(surface_.area_m2, Lp_m_per_s_Pa_, f.rho[i], n, fluid_.pressure[i], osmotic_Pa);
-    fluid_.drho_dt[i] = density_rate(fluid_.drho_dt[i], f.rho[i], f.m[i], dm_dt_[i]);
-  }
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    mass_rates(s_.fluid, fluid_.pressure, surface_.area_m2, Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_,
+               fluid_.drho_dt);
+  });
 }
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
   const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
-  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, wall_force_, bond_scratch_);
+  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, threads_, wall_force_, bond_scratch_);
   s_.wall_tension_N_m = tension_length / (2.0 * surface_.area_m2);
   timer_.lap(Phase::WallBonds);
-  bending_.add_forces(s_.wall.x, surface_.triangles, wall_force_);
+  bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
   timer_.lap(Phase::Bending);
 }
 
@@ -171,16 +258,18 @@ void Simulation::wall_terms() {
 void Simulation::wall_fluid_terms() {
   if (p_.coupling_model == kPressure) {
     pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal, neighbours_.fluid_wall(),
-                             CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_scratch_, fluid_.force,
+                             CubicSplineKernel(s_.smoothing_length_m), threads_, pressure_coupling_scratch_, fluid_.force,
                              fluid_.drho_dt, coupling_on_wall_);
   } else {
-    wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, fluid_.force, coupling_on_wall_, lj_pair_f_);
+    wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, threads_, fluid_.force, coupling_on_wall_,
+                      lj_scratch_);
   }
-  wall_force_ += coupling_on_wall_;
-  // Each wall particle's push from the fluid along its unit normal (packed norms and divisions).
-  const double outward = (coupling_on_wall_.cwiseProduct(surface_.vertex_normal).colwise().sum().array() /
-                          surface_.vertex_normal.colwise().norm().array())
-                             .sum();
+  const double outward = reduce_blocks<double>(
+      threads_, s_.wall.size(),
+      [&](Eigen::Index begin, Eigen::Index end) {
+        return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
+      },
+      std::plus<double>());
   s_.wall_pressure_Pa = outward / surface_.area_m2;
 }
 
@@ -193,17 +282,22 @@ void Simulation::plate_terms() {
 }
 
 void Simulation::kick(double half_dt) {
-  auto& f = s_.fluid;
-  kick_factor_ = half_dt / f.m.array();  // one packed division for all particles
-  for (Eigen::Index i = 0; i < f.size(); ++i) f.v.col(i) += kick_factor_[i] * fluid_.force.col(i);
-  f.rho += half_dt * fluid_.drho_dt;
-  f.m += half_dt * dm_dt_;
-  s_.wall.v += (half_dt / s_.wall.mass_kg) * wall_force_;
+  kick_factor_.resize(s_.fluid.size());
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, begin, end, kick_factor_, s_.fluid);
+  });
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    move(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
+  });
 }
 
 void Simulation::drift(double dt) {
-  s_.fluid.x += dt * s_.fluid.v;
-  s_.wall.x += dt * s_.wall.v;
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    move(dt, s_.fluid.v, begin, end, s_.fluid.x);
+  });
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    move(dt, s_.wall.v, begin, end, s_.wall.x);
+  });
   s_.time_s += dt;
   Plates& plates = s_.plates;
   if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
@@ -211,9 +305,16 @@ void Simulation::drift(double dt) {
 
 // The wall-pressure closure (pressure_closure.hpp): during drying only.
 void Simulation::apply_pressure_closure() {
-  const double factor =
-      pressure_closure_factor(s_.wall_pressure_Pa, fluid_.pressure.mean(), p_.dt_s, p_.pressure_closure_time_s);
-  if (factor != 1.0) s_.fluid.m *= factor;
+  const Eigen::VectorXd& P = fluid_.pressure;
+  const double pressure_sum = reduce_blocks<double>(
+      threads_, P.size(), [&](Eigen::Index begin, Eigen::Index end) { return P.segment(begin, end - begin).sum(); },
+      std::plus<double>());
+  const double factor = pressure_closure_factor(s_.wall_pressure_Pa, pressure_sum / static_cast<double>(P.size()),
+                                                p_.dt_s, p_.pressure_closure_time_s);
+  if (factor != 1.0)
+    for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+      scale(factor, begin, end, s_.fluid.m);
+    });
 }
 
 void Simulation::start_at_rest() {
@@ -235,18 +336,24 @@ std::string Simulation::where() const {
 }
 
 void Simulation::check_state() const {
+  const auto both = [](bool a, bool b) { return a && b; };
+  const bool fluid_sound = reduce_blocks<bool>(
+      threads_, s_.fluid.size(), [&](Eigen::Index b, Eigen::Index e) { return fluid_is_sound(s_.fluid, b, e); }, both);
+  const bool wall_finite = reduce_blocks<bool>(
+      threads_, s_.wall.size(), [&](Eigen::Index b, Eigen::Index e) { return wall_is_finite(s_.wall, b, e); }, both);
+  if (fluid_sound && wall_finite) return;
+  // Something is wrong: find the first particle at fault, in the order of the quantities.
   const auto report = [&](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) {
     for (Eigen::Index i = 0; i < m.cols(); ++i)
       if (!m.col(i).allFinite())
         throw NumericalFailure(where() + ": " + kind + " particle " + std::to_string(i) + " has a non-finite " +
                                quantity);
   };
-  if (!all_finite(s_.fluid.x)) report("fluid", s_.fluid.x, "position");
-  if (!all_finite(s_.fluid.v)) report("fluid", s_.fluid.v, "velocity");
-  if (!all_finite(s_.wall.x)) report("wall", s_.wall.x, "position");
-  if (!all_finite(s_.wall.v)) report("wall", s_.wall.v, "velocity");
+  report("fluid", s_.fluid.x, "position");
+  report("fluid", s_.fluid.v, "velocity");
+  report("wall", s_.wall.x, "position");
+  report("wall", s_.wall.v, "velocity");
   const auto& f = s_.fluid;
-  if (all_finite(f.rho) && all_finite(f.m) && f.rho.minCoeff() > 0 && f.m.minCoeff() > 0) return;
   for (Eigen::Index i = 0; i < f.size(); ++i)
     if (!std::isfinite(f.rho[i]) || !(f.rho[i] > 0) || !std::isfinite(f.m[i]) || !(f.m[i] > 0)) {
       std::ostringstream msg;
@@ -262,14 +369,12 @@ void Simulation::check_state() const {
 void Simulation::check_time_step() const {
   const double h = s_.smoothing_length_m;
   const double c0 = eos().sound_speed_m_s();
-  Eigen::Index i_v = 0, i_a = 0;
-  double v2_max = 0, a2_max = 0;
-  for (Eigen::Index i = 0; i < s_.fluid.size(); ++i) {
-    const double v2 = s_.fluid.v.col(i).squaredNorm();
-    const double a2 = fluid_.force.col(i).squaredNorm() / (s_.fluid.m[i] * s_.fluid.m[i]);
-    if (v2 > v2_max) v2_max = v2, i_v = i;
-    if (a2 > a2_max) a2_max = a2, i_a = i;
-  }
+  const Fastest fastest = reduce_blocks<Fastest>(
+      threads_, s_.fluid.size(),
+      [&](Eigen::Index begin, Eigen::Index end) { return fastest_fluid(s_.fluid, fluid_.force, begin, end); },
+      [](const Fastest& a, const Fastest& b) { return a.faster(b); });
+  const double v2_max = fastest.v2, a2_max = fastest.a2;
+  const Eigen::Index i_v = fastest.i_v, i_a = fastest.i_a;
   const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
   const double sound_limit = 0.25 * h / (c0 + v_max);
   const double viscous_limit =

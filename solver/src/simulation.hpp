@@ -19,6 +19,7 @@
 #include "state.hpp"
 #include "surface.hpp"
 #include "wall_bonds.hpp"
+#include "wall_fluid.hpp"
 #include "wall_mesh.hpp"
 
 namespace cellsim {
@@ -86,7 +87,9 @@ class Simulation {
   FluidRates fluid_;
   Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
   Eigen::VectorXd dm_dt_;
-  Eigen::VectorXd lj_pair_f_, bond_scratch_, kick_factor_;  // scratch, kept to avoid reallocation
+  Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation
+  BondScratch bond_scratch_;
+  WallFluidScratch lj_scratch_;
   PressureCouplingScratch pressure_coupling_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;

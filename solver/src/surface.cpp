@@ -4,32 +4,64 @@
 
 #include <Eigen/Geometry>
 
+#include "threads.hpp"
+
 namespace cellsim {
 
-void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out) {
-  const auto n = static_cast<Eigen::Index>(mesh.triangles.size());
-  out.N.resize(3, n);
-  out.inv_norm.resize(n);
-  for (Eigen::Index t = 0; t < n; ++t) {
+namespace {
+
+// Triangles [begin, end): area normals, |N| and 1 / |N| (packed square roots and divisions).
+void triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, Eigen::Index begin, Eigen::Index end,
+                      TriangleNormals& out) {
+  for (Eigen::Index t = begin; t < end; ++t) {
     const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
     const Eigen::Vector3d a = x.col(tri[0]);
     out.N.col(t) = (x.col(tri[1]) - a).cross(x.col(tri[2]) - a);
   }
-  out.norm = out.N.colwise().norm().transpose();  // packed square roots and divisions
-  out.inv_norm = out.norm.cwiseInverse();
+  const Eigen::Index count = end - begin;
+  out.norm.segment(begin, count) = out.N.middleCols(begin, count).colwise().norm().transpose();
+  out.inv_norm.segment(begin, count) = out.norm.segment(begin, count).cwiseInverse();
 }
 
-void WallSurface::update(const Eigen::Matrix3Xd& x, const WallMesh& mesh) {
-  compute_triangle_normals(x, mesh, triangles);
-  vertex_normal.setZero(3, x.cols());
+// The span's triangles: their area normals added to the corners it owns; returns the six volumes of
+// the triangles whose first corner it owns (each triangle counted once).
+double add_to_vertex_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, const Eigen::Matrix3Xd& N,
+                             const OwnedSpan& span, Eigen::Matrix3Xd& vertex_normal) {
   double six_volume = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Eigen::Vector3d n = triangles.N.col(static_cast<Eigen::Index>(t));
-    six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
-    for (int v : tri) vertex_normal.col(v) += n;
+  for (Eigen::Index t = span.item_begin; t < span.item_end; ++t) {
+    const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
+    const Eigen::Vector3d n = N.col(t);
+    if (span.owns(tri[0])) six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
+    for (int v : tri)
+      if (span.owns(v)) vertex_normal.col(v) += n;
   }
+  return six_volume;
+}
+
+}  // namespace
+
+void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out, int threads) {
+  const auto n = static_cast<Eigen::Index>(mesh.triangles.size());
+  out.N.resize(3, n);
+  out.norm.resize(n);
+  out.inv_norm.resize(n);
+  for_blocks(threads, n, [&](Eigen::Index begin, Eigen::Index end) { triangle_normals(x, mesh, begin, end, out); });
+}
+
+void WallSurface::update(const Eigen::Matrix3Xd& x, const WallMesh& mesh, int threads) {
+  compute_triangle_normals(x, mesh, triangles, threads);
+  vertex_normal.resize(3, x.cols());
+  six_volume_.assign(static_cast<std::size_t>(threads), 0.0);
+  const auto& spans = spans_.for_threads(threads, static_cast<int>(x.cols()), triangles.N.cols(), [&](Eigen::Index t) {
+    return mesh.triangles[static_cast<std::size_t>(t)];
+  });
+  for_owned_spans(threads, spans, [&](int t, const OwnedSpan& span) {
+    vertex_normal.middleCols(span.target_begin, span.target_end - span.target_begin).setZero();
+    six_volume_[static_cast<std::size_t>(t)] = add_to_vertex_normals(x, mesh, triangles.N, span, vertex_normal);
+  });
   area_m2 = 0.5 * triangles.norm.sum();
+  double six_volume = 0;
+  for (double part : six_volume_) six_volume += part;  // threads in order
   volume_m3 = six_volume / 6.0;
 }
 

@@ -2,7 +2,11 @@
 // The closed wall surface, measured once a step (model.md §1, §8): each triangle's area normal,
 // the wall area A_c (Eq 11), the enclosed volume and its equivalent diameter D (Eq 6), and the
 // vertex normals and areas. Every user (dynamics, bending, records, settle) reads these numbers.
+#include <vector>
+
 #include <Eigen/Core>
+
+#include "owned_spans.hpp"
 
 #include "wall_mesh.hpp"
 
@@ -13,7 +17,7 @@ struct TriangleNormals {
   Eigen::Matrix3Xd N;
   Eigen::VectorXd norm, inv_norm;
 };
-void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out);
+void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, TriangleNormals& out, int threads = 1);
 
 struct WallSurface {
   TriangleNormals triangles;
@@ -21,9 +25,14 @@ struct WallSurface {
   double area_m2 = 0;              // sum of the triangles' areas
   double volume_m3 = 0;            // sum of the signed tetrahedra (origin, triangle): > 0 when closed and outward
 
-  void update(const Eigen::Matrix3Xd& x, const WallMesh& mesh);
+  // threads: as `cellsim run --threads` (owned_spans.hpp).
+  void update(const Eigen::Matrix3Xd& x, const WallMesh& mesh, int threads = 1);
   // The area each wall particle owns: a third of each adjacent triangle's (the contact area, model.md §8).
   Eigen::VectorXd vertex_areas(const WallMesh& mesh) const;
+
+ private:
+  std::vector<double> six_volume_;  // per thread, added in order
+  OwnedSpans spans_;                // each thread's particles and the triangles at them (owned_spans.hpp)
 };
 
 WallSurface wall_surface(const Eigen::Matrix3Xd& x, const WallMesh& mesh);

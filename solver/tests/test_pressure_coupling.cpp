@@ -40,7 +40,7 @@ Forces coupling_forces(const Cell& cell, double h, const Eigen::VectorXd& pressu
                              Eigen::VectorXd::Constant(n, 1000.0)};
   const WallParticles wall{cell.wall_x, wall_v, cell.wall_mass_kg};
   PressureCouplingScratch scratch;
-  pressure_coupling_forces(fluid, pressure, wall, surface.vertex_normal, lists.fluid_wall(), CubicSplineKernel(h),
+  pressure_coupling_forces(fluid, pressure, wall, surface.vertex_normal, lists.fluid_wall(), CubicSplineKernel(h), 1,
                            scratch, out.on_fluid, out.drho_dt, out.on_wall);
   return out;
 }
@@ -88,10 +88,10 @@ TEST(PressureCoupling, UniformPressureLoadsAFlatWallWithPressureTimesArea) {
   Eigen::VectorXd drho = Eigen::VectorXd::Zero(n);
   PressureCouplingScratch scratch;
   pressure_coupling_forces(fluid, Eigen::VectorXd::Constant(n, P), wall, vertex_normal, lists.fluid_wall(),
-                           CubicSplineKernel(h), scratch, on_fluid, drho, on_wall);
+                           CubicSplineKernel(h), 1, scratch, on_fluid, drho, on_wall);
   const int centre = (n_wall_side / 2) * n_wall_side + n_wall_side / 2;
   EXPECT_NEAR(-on_wall(2, centre) / (P * a * a), 1.0, 0.03);  // pushed out, along -z
-  EXPECT_NEAR(scratch.wall_pressure[centre], P, 1e-9 * P);    // the Shepard average of a uniform field
+  EXPECT_NEAR(scratch.shepard(1, centre), P, 1e-9 * P);    // the Shepard average of a uniform field
   EXPECT_GT(on_fluid.row(2).sum(), 0);                        // the fluid is pushed back in, along +z
   EXPECT_EQ(drho.norm(), 0.0);                                // nothing moves: no density change
 }
