@@ -44,15 +44,12 @@ struct Lanes {
   }
 };
 
-// Rows first_row[t] .. first_row[t + 1] - 1 go to thread t: contiguous blocks of about equal
-// numbers of listed pairs, fixed by the list and the thread count (so results are reproducible).
+// Rows first_row[t] .. first_row[t + 1] - 1 go to thread t: the particles [n t / T, n (t + 1) / T)
+// that every other loop of the step gives it too, so each thread works on memory it wrote itself
+// (between cores, memory costs far more than a slightly uneven split of the pairs).
 std::vector<int> split_rows(const PairList& pairs, int threads) {
-  std::vector<int> first_row(static_cast<std::size_t>(threads) + 1, pairs.rows());
-  first_row[0] = 0;
-  const long total = pairs.offset.back();
-  for (int t = 1; t < threads; ++t)
-    first_row[t] = static_cast<int>(
-        std::lower_bound(pairs.offset.begin(), pairs.offset.end() - 1, total * t / threads) - pairs.offset.begin());
+  std::vector<int> first_row(static_cast<std::size_t>(threads) + 1);
+  for (int t = 0; t <= threads; ++t) first_row[static_cast<std::size_t>(t)] = static_cast<int>(static_cast<long>(pairs.rows()) * t / threads);
   return first_row;
 }
 
@@ -105,14 +102,36 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
   }
 }
 
-// The blocks' sums, added in block order, for particles [begin, end).
+// The particles j >= last (but not the padding n) that rows [first, last) reach, ascending.
+void find_halo(const PairList& pairs, int first, int last, std::vector<char>& mark, std::vector<int>& halo) {
+  const int n = pairs.rows();
+  mark.assign(static_cast<std::size_t>(n), 0);
+  for (int q = pairs.offset[static_cast<std::size_t>(first)]; q < pairs.offset[static_cast<std::size_t>(last)]; ++q) {
+    const int j = pairs.index[static_cast<std::size_t>(q)];
+    if (j >= last && j < n) mark[static_cast<std::size_t>(j)] = 1;
+  }
+  halo.clear();
+  for (int j = last; j < n; ++j)
+    if (mark[static_cast<std::size_t>(j)]) halo.push_back(j);
+}
+
+// The blocks' sums for particles [begin, end), added in block order: each block wrote (and zeroed)
+// only its own rows and its halo.
 void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
-  const Eigen::Index count = end - begin;
-  out.force.middleCols(begin, count) = out.thread_sums[0].block(0, begin, 3, count);
-  out.drho_dt.segment(begin, count) = out.thread_sums[0].row(3).segment(begin, count).transpose();
-  for (std::size_t t = 1; t < out.thread_sums.size(); ++t) {
-    out.force.middleCols(begin, count) += out.thread_sums[t].block(0, begin, 3, count);
-    out.drho_dt.segment(begin, count) += out.thread_sums[t].row(3).segment(begin, count).transpose();
+  out.force.middleCols(begin, end - begin).setZero();
+  out.drho_dt.segment(begin, end - begin).setZero();
+  for (std::size_t t = 0; t < out.thread_sums.size(); ++t) {
+    const auto& sums = out.thread_sums[t];
+    const auto& halo = out.halo[t];
+    for (auto j = std::lower_bound(halo.begin(), halo.end(), begin); j != halo.end() && *j < end; ++j) {
+      out.force.col(*j) += sums.col(*j).head<3>();
+      out.drho_dt[*j] += sums(3, *j);
+    }
+    const Eigen::Index from = std::max<Eigen::Index>(begin, out.first_row[t]),
+                       to = std::min<Eigen::Index>(end, out.first_row[t + 1]);
+    if (from >= to) continue;
+    out.force.middleCols(from, to - from) += sums.block(0, from, 3, to - from);
+    out.drho_dt.segment(from, to - from) += sums.row(3).segment(from, to - from).transpose();
   }
 }
 
@@ -129,15 +148,28 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.pressure.resize(n);
   out.records.resize(kRecord, n + 1);
   out.thread_sums.resize(static_cast<std::size_t>(threads));
-  const std::vector<int> first_row = split_rows(pairs, threads);
+  out.first_row = split_rows(pairs, threads);
+  const bool new_halos = out.halo_build != pairs.build || out.halo.size() != static_cast<std::size_t>(threads);
+  out.halo.resize(static_cast<std::size_t>(threads));
+  out.halo_mark.resize(static_cast<std::size_t>(threads));
+  out.halo_build = pairs.build;
   const auto run_blocks = [&](int first, int stride) {
     for (int t = first; t < threads; t += stride) {
-      fill_records(f, eos, n * t / threads, n * (t + 1) / threads, out);
-      out.thread_sums[static_cast<std::size_t>(t)].setZero(kSum, n + 1);
+      const auto b = static_cast<std::size_t>(t);
+      const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
+      fill_records(f, eos, r0, r1, out);
+      if (new_halos) find_halo(pairs, r0, r1, out.halo_mark[b], out.halo[b]);
+      // A block's sums need zeros only where its pairs add: its rows, its halo and the padding.
+      auto& sums = out.thread_sums[b];
+      sums.resize(kSum, n + 1);
+      sums.middleCols(r0, r1 - r0).setZero();
+      for (int j : out.halo[b]) sums.col(j).setZero();
+      sums.col(n).setZero();
     }
     if (stride > 1) wait_for_all_threads();  // every record is written before any block reads them
     for (int t = first; t < threads; t += stride)
-      add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), first_row[t], first_row[t + 1],
+      add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), out.first_row[static_cast<std::size_t>(t)],
+                     out.first_row[static_cast<std::size_t>(t) + 1],
                      out.thread_sums[static_cast<std::size_t>(t)].data());
   };
   if (threads == 1)

@@ -20,6 +20,12 @@ struct FluidRates {
   // of each thread (fluid_pairs.cpp says what they hold).
   Eigen::Matrix<double, 12, Eigen::Dynamic> records;
   std::vector<Eigen::Matrix4Xd> thread_sums;
+  // Block t: rows [first_row[t], first_row[t + 1]), and the later particles its pairs reach (its
+  // halo, ascending), found once per build of the list (halo_build) and thread count.
+  std::vector<int> first_row;
+  std::vector<std::vector<int>> halo;
+  std::vector<std::vector<char>> halo_mark;
+  long halo_build = -1;
 };
 
 // Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).

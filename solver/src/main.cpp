@@ -1,5 +1,6 @@
 // cellsim: one apple parenchyma cell, dried then compressed (Rathnayaka et al. 2020).
 // JSON case in, HDF5 (+ XDMF) out. See README.md and docs/case-reference.md.
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,7 +22,9 @@ const char* kUsage =
     "usage:\n"
     "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--from DRIED.h5] [--threads N] [--quiet]\n"
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
-    "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--threads N] [--set ...]  median ms/step, per phase\n"
+    "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--threads N] [--sizes] [--set ...]\n"
+    "                                                    median ms/step, per phase; --sizes: at the three\n"
+    "                                                    resolution levels, on 1 and N (at least 2) threads\n"
     "  cellsim params                                    the case keys (Markdown table)\n"
     "  cellsim schema                                    JSON Schema of the case file\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
@@ -29,8 +32,8 @@ const char* kUsage =
     "\n"
     "--from starts the compression stage from the end-of-drying state in DRIED.h5 (a run of the\n"
     "same case with compression.steps = 0); the output then holds the whole history.\n"
-    "--threads N shares the fluid pair loop among N threads (default 1: a workflow runs one job per\n"
-    "core); results are bit-identical for the same N and agree to round-off between counts.\n"
+    "--threads N shares every phase of the step among N threads (default 1: a workflow runs one job\n"
+    "per core); results are bit-identical for the same N and agree to round-off between counts.\n"
     "Keys use units in their names, e.g. --set drying.dryness=0.5 --set wall.G_MPa=0.18.\n"
     "Exit codes: 0 success, 2 bad input (nothing written), 3 numerical failure (OUT.partial kept).\n";
 
@@ -38,6 +41,7 @@ struct Args {
   std::string command, case_path, output_path, from_path;
   std::vector<std::string> overrides;
   bool quiet = false;
+  bool sizes = false;
   long steps = 2000;
   int repeats = 5;
   int threads = 1;
@@ -69,6 +73,7 @@ Args parse(int argc, char** argv) {
     else if (w == "--from") a.from_path = value(w);
     else if (w.rfind("--set=", 0) == 0) a.overrides.push_back(w.substr(6));
     else if (w == "--quiet") a.quiet = true;
+    else if (w == "--sizes") a.sizes = true;
     else if (w == "--steps") a.steps = positive_int(w, value(w));
     else if (w == "--repeats") a.repeats = static_cast<int>(positive_int(w, value(w)));
     else if (w == "--threads") {
@@ -91,6 +96,34 @@ cellsim::Params load(const Args& a, bool baseline = false) {
   nlohmann::json doc = a.case_path.empty() ? nlohmann::json::object() : cellsim::read_case_file(a.case_path);
   for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
   return cellsim::validate_case(doc);
+}
+
+// `cellsim bench`: one case, or with --sizes the case at the three resolution levels (steps scaled
+// down with the size, at least 100), each on one thread and on max(2, --threads).
+void bench(const Args& a) {
+  const cellsim::Params p = load(a, /*baseline=*/true);
+  if (!a.sizes) {
+    cellsim::print_benchmark(cellsim::measure_steps(p, a.steps, a.repeats, a.threads));
+    return;
+  }
+  std::vector<int> thread_counts{1};
+  if (cellsim::built_with_openmp()) thread_counts.push_back(std::max(2, a.threads));
+  std::vector<int> levels;
+  std::vector<cellsim::BenchResult> results;
+  for (int level : {1, 2, 3}) {
+    Args at_level = a;
+    for (const auto& o : cellsim::resolution_level_overrides(p, level)) at_level.overrides.push_back(o);
+    const cellsim::Params lp = load(at_level, /*baseline=*/true);
+    const long steps = std::max(100L, a.steps * (p.n_fluid + p.n_wall) / (lp.n_fluid + lp.n_wall));
+    for (int threads : thread_counts) {
+      std::cerr << "cellsim bench: level " << level << " (" << lp.n_fluid << " fluid + " << lp.n_wall
+                << " wall particles), " << threads << " thread" << (threads == 1 ? "" : "s") << ", " << steps
+                << " steps x " << a.repeats << " repeats\n";
+      levels.push_back(level);
+      results.push_back(cellsim::measure_steps(lp, steps, a.repeats, threads));
+    }
+  }
+  cellsim::print_size_table(levels, results);
 }
 
 int dispatch(int argc, char** argv) {
@@ -124,7 +157,7 @@ int dispatch(int argc, char** argv) {
     return 0;
   }
   if (a.command == "bench") {
-    cellsim::run_benchmark(load(a, /*baseline=*/true), {a.steps, a.repeats, a.threads});
+    bench(a);
     return 0;
   }
   if (a.command == "run") {

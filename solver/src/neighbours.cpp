@@ -86,6 +86,65 @@ double max_displacement(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& the
   return std::sqrt(max2);
 }
 
+// Rows [first, last) of both lists, each into `fluid_fluid` and `fluid_wall` (offsets from 0).
+void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const CellGrid& fluid_grid,
+               const CellGrid& wall_grid, double ff2, double fw2, int first, int last, PairList& fluid_fluid,
+               PairList& fluid_wall) {
+  const int n = static_cast<int>(fluid_x.cols());
+  fluid_fluid.offset.assign(1, 0);
+  fluid_fluid.index.clear();
+  fluid_fluid.pairs = 0;
+  fluid_wall.offset.assign(1, 0);
+  fluid_wall.index.clear();
+  fluid_wall.pairs = 0;
+  std::vector<int> row;
+  for (int i = first; i < last; ++i) {
+    const Eigen::Vector3d xi = fluid_x.col(i);
+    row.clear();
+    fluid_grid.for_each_near(xi, [&](int j) {
+      if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2) row.push_back(j);
+    });
+    std::sort(row.begin(), row.end());  // ascending j: memory order, and independent of binning
+    fluid_fluid.pairs += row.size();
+    while (row.size() % kPairLanes) row.push_back(n);
+    fluid_fluid.index.insert(fluid_fluid.index.end(), row.begin(), row.end());
+    fluid_fluid.offset.push_back(static_cast<int>(fluid_fluid.index.size()));
+
+    row.clear();
+    wall_grid.for_each_near(xi, [&](int k) {
+      if ((wall_x.col(k) - xi).squaredNorm() < fw2) row.push_back(k);
+    });
+    std::sort(row.begin(), row.end());
+    fluid_wall.pairs += row.size();
+    fluid_wall.index.insert(fluid_wall.index.end(), row.begin(), row.end());
+    fluid_wall.offset.push_back(static_cast<int>(fluid_wall.index.size()));
+  }
+}
+
+// The threads' parts of one list (parts[2 b + which]) joined in order, each thread copying its own.
+void join_parts(const std::vector<PairList>& parts, int threads, int which, PairList& list) {
+  std::vector<std::size_t> first_index(static_cast<std::size_t>(threads) + 1, 0), first_row(first_index);
+  list.pairs = 0;
+  for (int b = 0; b < threads; ++b) {
+    const PairList& part = parts[static_cast<std::size_t>(2 * b + which)];
+    first_index[static_cast<std::size_t>(b) + 1] = first_index[static_cast<std::size_t>(b)] + part.index.size();
+    first_row[static_cast<std::size_t>(b) + 1] = first_row[static_cast<std::size_t>(b)] + static_cast<std::size_t>(part.rows());
+    list.pairs += part.pairs;
+  }
+  list.index.resize(first_index.back());
+  list.offset.resize(first_row.back() + 1);
+  list.offset[0] = 0;
+  run_on_threads(threads, [&](int t, int count) {
+    for (int b = t; b < threads; b += count) {
+      const PairList& part = parts[static_cast<std::size_t>(2 * b + which)];
+      std::copy(part.index.begin(), part.index.end(), list.index.begin() + static_cast<long>(first_index[static_cast<std::size_t>(b)]));
+      const int base = static_cast<int>(first_index[static_cast<std::size_t>(b)]);
+      for (int r = 1; r <= part.rows(); ++r)
+        list.offset[first_row[static_cast<std::size_t>(b)] + static_cast<std::size_t>(r)] = base + part.offset[static_cast<std::size_t>(r)];
+    }
+  });
+}
+
 }  // namespace
 
 bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
@@ -98,11 +157,11 @@ bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix
                                         max_displacement(wall_x, wall_at_build_, threads));
     if (fluid_cutoff + moved <= list_fluid_cutoff_ && wall_fluid_cutoff + moved <= list_wall_cutoff_) return false;
   }
-  build(fluid_x, wall_x);
+  build(fluid_x, wall_x, threads);
   return true;
 }
 
-void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x) {
+void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads) {
   list_fluid_cutoff_ = fluid_cutoff_ + skin_;
   list_wall_cutoff_ = wall_fluid_cutoff_ + skin_;
   fluid_at_build_ = fluid_x;
@@ -120,34 +179,24 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   const CellGrid wall_grid(wall_x, lo, hi, list_wall_cutoff_);
 
   const int n = static_cast<int>(fluid_x.cols());
-  fluid_fluid_.offset.assign(1, 0);
-  fluid_fluid_.index.clear();
-  fluid_fluid_.pairs = 0;
-  fluid_wall_.offset.assign(1, 0);
-  fluid_wall_.index.clear();
-  fluid_wall_.pairs = 0;
-  std::vector<int> row;
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d xi = fluid_x.col(i);
-    row.clear();
-    fluid_grid.for_each_near(xi, [&](int j) {
-      if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2) row.push_back(j);
-    });
-    std::sort(row.begin(), row.end());  // ascending j: memory order, and independent of binning
-    fluid_fluid_.pairs += row.size();
-    while (row.size() % kPairLanes) row.push_back(n);
-    fluid_fluid_.index.insert(fluid_fluid_.index.end(), row.begin(), row.end());
-    fluid_fluid_.offset.push_back(static_cast<int>(fluid_fluid_.index.size()));
-
-    row.clear();
-    wall_grid.for_each_near(xi, [&](int k) {
-      if ((wall_x.col(k) - xi).squaredNorm() < fw2) row.push_back(k);
-    });
-    std::sort(row.begin(), row.end());
-    fluid_wall_.pairs += row.size();
-    fluid_wall_.index.insert(fluid_wall_.index.end(), row.begin(), row.end());
-    fluid_wall_.offset.push_back(static_cast<int>(fluid_wall_.index.size()));
+  const auto rows = [&](int first, int last, PairList& fluid_fluid, PairList& fluid_wall) {
+    list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, first, last, fluid_fluid, fluid_wall);
+  };
+  fluid_fluid_.build = fluid_wall_.build = builds_;
+  if (threads <= 1 || n < 2 * threads) {
+    rows(0, n, fluid_fluid_, fluid_wall_);
+    return;
   }
+  // Each thread lists its own particles' rows (the particles every loop of the step gives it), then
+  // copies them into place: the lists come out the same as from one thread.
+  parts_.resize(static_cast<std::size_t>(2 * threads));
+  run_on_threads(threads, [&](int t, int count) {
+    for (int b = t; b < threads; b += count)
+      rows(static_cast<int>(static_cast<long>(n) * b / threads), static_cast<int>(static_cast<long>(n) * (b + 1) / threads),
+           parts_[static_cast<std::size_t>(2 * b)], parts_[static_cast<std::size_t>(2 * b + 1)]);
+  });
+  join_parts(parts_, threads, 0, fluid_fluid_);
+  join_parts(parts_, threads, 1, fluid_wall_);
 }
 
 }  // namespace cellsim

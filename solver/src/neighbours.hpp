@@ -13,6 +13,7 @@ struct PairList {
   std::vector<int> offset;
   std::vector<int> index;
   std::size_t pairs = 0;  // listed pairs, not counting padding
+  long build = 0;         // which build of the lists this is (NeighbourLists::builds), for caches
   int rows() const { return static_cast<int>(offset.size()) - 1; }
 };
 
@@ -24,7 +25,7 @@ class NeighbourLists {
  public:
   explicit NeighbourLists(double skin_m) : skin_(skin_m) {}
 
-  // Rebuilds if needed for these cut-offs; returns true if it rebuilt. threads: for the check.
+  // Rebuilds if needed for these cut-offs; returns true if it rebuilt. threads: as `cellsim run --threads`.
   bool update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
               double wall_fluid_cutoff, int threads = 1);
 
@@ -35,13 +36,14 @@ class NeighbourLists {
   long builds() const { return builds_; }
 
  private:
-  void build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x);
+  void build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads);
 
   double skin_;
   double list_fluid_cutoff_ = 0, list_wall_cutoff_ = 0;  // cut-off + skin at the last build
   double fluid_cutoff_ = 0, wall_fluid_cutoff_ = 0;
   Eigen::Matrix3Xd fluid_at_build_, wall_at_build_;
   PairList fluid_fluid_, fluid_wall_;
+  std::vector<PairList> parts_;  // each thread's rows of both lists, while building with threads
   long builds_ = 0;
   bool stale_ = true;  // no valid list yet, or invalidated
 };

@@ -144,3 +144,25 @@ TEST(Threads, AStepIsReproducibleForACountAndAgreesWithOneThreadToRoundOff) {
   EXPECT_LT((two.wall.x - one.wall.x).cwiseAbs().maxCoeff(), 1e-12 * size);
   EXPECT_GT((one.fluid.x - cell.fluid_x).cwiseAbs().maxCoeff(), 0.0);  // the particles moved
 }
+
+TEST(Threads, NeighbourListsAreTheSameForAnyThreadCount) {
+  if (!built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
+  const ShakenCell s;
+  const auto lists = [&](int threads) {
+    NeighbourLists l(0.15 * *s.p.h0_m);
+    l.update(s.cell.fluid_x, s.wall.x, 2.0 * *s.p.h0_m, 1.5 * *s.p.h0_m, threads);
+    return l;
+  };
+  const NeighbourLists one = lists(1);
+  ASSERT_GT(one.fluid_fluid().pairs, 10000u);
+  ASSERT_GT(one.fluid_wall().pairs, 1000u);
+  for (int threads : {2, 3}) {
+    const NeighbourLists many = lists(threads);
+    EXPECT_EQ(many.fluid_fluid().offset, one.fluid_fluid().offset) << threads << " threads";
+    EXPECT_EQ(many.fluid_fluid().index, one.fluid_fluid().index) << threads << " threads";
+    EXPECT_EQ(many.fluid_fluid().pairs, one.fluid_fluid().pairs);
+    EXPECT_EQ(many.fluid_wall().offset, one.fluid_wall().offset) << threads << " threads";
+    EXPECT_EQ(many.fluid_wall().index, one.fluid_wall().index) << threads << " threads";
+    EXPECT_EQ(many.fluid_wall().pairs, one.fluid_wall().pairs);
+  }
+}
