@@ -7,6 +7,7 @@
 
 #include "cli_helpers.hpp"
 #include "phase_timer.hpp"
+#include "threads.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;
@@ -36,4 +37,30 @@ TEST(Bench, PrintsTheMedianStepAndEveryPhaseThatAddUpToIt) {
   // phases are the only time not in some phase.
   EXPECT_GT(phases_ms, 0.7 * total_ms) << r.out;
   EXPECT_LT(phases_ms, 1.1 * total_ms) << r.out;
+}
+
+// --sizes: the case at the three resolution levels (2.83x and 8x the fluid, 2x and 4x the wall,
+// half the time step at level 3), each on 1 and 2 threads, with one row per run.
+TEST(Bench, SizesRunsTheThreeResolutionLevelsOnOneAndTwoThreads) {
+  ScratchDir dir("bench_sizes");
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "output": {"record_every": 50}})");
+  const auto r = run_cli({"bench", c, "--sizes", "--steps", "100", "--repeats", "1"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::regex row(R"(\n\s*(\d)\s+(\d+)\s+(\d+)\s+([\d.]+)\s+(\d)\s+(\d+)\s+[\d.]+ \()");
+  std::vector<std::smatch> rows;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), row); it != std::sregex_iterator(); ++it) rows.push_back(*it);
+  const int thread_counts = cellsim::built_with_openmp() ? 2 : 1;
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(3 * thread_counts)) << r.out;
+  const long fluid[] = {400, 1131, 3200}, wall[] = {402, 804, 1608};
+  const double dt_ns[] = {1, 1, 0.5};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto level = std::stoi(rows[i][1]) - 1;
+    EXPECT_EQ(level, static_cast<int>(i) / thread_counts);
+    EXPECT_EQ(std::stol(rows[i][2]), fluid[level]) << r.out;
+    EXPECT_EQ(std::stol(rows[i][3]), wall[level]) << r.out;
+    EXPECT_DOUBLE_EQ(std::stod(rows[i][4]), dt_ns[level]);
+    EXPECT_EQ(std::stoi(rows[i][5]), 1 + static_cast<int>(i) % thread_counts);
+  }
+  for (const char* name : cellsim::kPhaseNames)  // the phase table names every phase
+    EXPECT_NE(r.out.find(std::string(name).substr(0, std::string(name).find(" ("))), std::string::npos) << name;
 }
