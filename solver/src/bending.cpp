@@ -48,20 +48,23 @@ void Bending::add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& norma
       });
   for_owned_spans(threads, hinge_spans, [&](int, const OwnedSpan& span) {
     triangle_sum_.middleCols(span.target_begin, span.target_end - span.target_begin).setZero();
-    add_hinges(normals, span, triangle_sum_);
+    with_all_or_some(span, [&](auto all) { add_hinges(all, normals, span, triangle_sum_); });
   });
   const auto& triangle_spans = triangle_spans_.for_threads(
       threads, static_cast<int>(x.cols()), n_triangles,
       [&](Eigen::Index t) { return mesh_.triangles[static_cast<std::size_t>(t)]; });
   for_owned_spans(threads, triangle_spans,
-                  [&](int, const OwnedSpan& span) { add_triangle_forces(x, triangle_sum_, span, force); });
+                  [&](int, const OwnedSpan& span) {
+                    with_all_or_some(span, [&](auto all) { add_triangle_forces(all, x, triangle_sum_, span, force); });
+                  });
 }
 
 // The span's hinges: weighted p of each to the triangles' sums P it owns.
-void Bending::add_hinges(const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const {
+template <class All>
+void Bending::add_hinges(All, const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const {
   for (Eigen::Index n = span.item_begin; n < span.item_end; ++n) {
     const Hinge& h = mesh_.hinges[static_cast<std::size_t>(n)];
-    const bool owns_t1 = span.owns(h.t1), owns_t2 = span.owns(h.t2);
+    const bool owns_t1 = All::value || span.owns(h.t1), owns_t2 = All::value || span.owns(h.t2);
     if (!owns_t1 && !owns_t2) continue;
     const Eigen::Vector3d n1 = normals.N.col(h.t1) * normals.inv_norm[h.t1];
     const Eigen::Vector3d n2 = normals.N.col(h.t2) * normals.inv_norm[h.t2];
@@ -73,11 +76,13 @@ void Bending::add_hinges(const TriangleNormals& normals, const OwnedSpan& span, 
 }
 
 // The span's triangles: P into forces on the corners it owns.
-void Bending::add_triangle_forces(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
+template <class All>
+void Bending::add_triangle_forces(All, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
                                   Eigen::Matrix3Xd& force) const {
   for (Eigen::Index t = span.item_begin; t < span.item_end; ++t) {
     const auto& tri = mesh_.triangles[static_cast<std::size_t>(t)];
-    const bool owns_u = span.owns(tri[0]), owns_v = span.owns(tri[1]), owns_w = span.owns(tri[2]);
+    const bool owns_u = All::value || span.owns(tri[0]), owns_v = All::value || span.owns(tri[1]),
+               owns_w = All::value || span.owns(tri[2]);
     if (!owns_u && !owns_v && !owns_w) continue;
     const Eigen::Vector3d p = P.col(t);
     const Eigen::Vector3d u = x.col(tri[0]), v = x.col(tri[1]), w = x.col(tri[2]);

@@ -23,8 +23,10 @@ class Bending {
   void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;  // computes the normals
 
  private:
-  void add_hinges(const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const;
-  void add_triangle_forces(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
+  template <class All>  // std::true_type: the span owns every target (owned_spans.hpp)
+  void add_hinges(All, const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const;
+  template <class All>
+  void add_triangle_forces(All, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
                            Eigen::Matrix3Xd& force) const;
 
   const WallMesh& mesh_;

@@ -8,6 +8,7 @@
 // sorted by their smallest corner and its particles are a spiral, so an item spans few indices and
 // the threads' item ranges overlap only near their boundary.
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,8 +20,16 @@ namespace cellsim {
 struct OwnedSpan {
   Eigen::Index item_begin = 0, item_end = 0;  // the items that touch a target in [target_begin, target_end)
   int target_begin = 0, target_end = 0;
+  bool all = false;  // it owns every target (one thread): loops drop the checks (with_all_or_some)
   bool owns(int target) const { return target >= target_begin && target < target_end; }
 };
+
+// Calls loop(std::true_type) when the span owns every target, loop(std::false_type) otherwise, so
+// that a loop written `if (All::value || span.owns(v))` has no checks on one thread.
+template <class Loop>
+auto with_all_or_some(const OwnedSpan& span, Loop&& loop) {
+  return span.all ? loop(std::true_type{}) : loop(std::false_type{});
+}
 
 class OwnedSpans {
  public:
@@ -45,6 +54,7 @@ class OwnedSpans {
             s.item_end = std::max(s.item_end, item + 1);
           }
     for (auto& s : spans_) s.item_begin = std::min(s.item_begin, s.item_end);
+    if (threads == 1) spans_[0] = OwnedSpan{0, n_items, 0, n_targets, true};
     return spans_;
   }
 

@@ -25,15 +25,16 @@ void triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, Eigen::In
 
 // The span's triangles: their area normals added to the corners it owns; returns the six volumes of
 // the triangles whose first corner it owns (each triangle counted once).
-double add_to_vertex_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, const Eigen::Matrix3Xd& N,
+template <class All>
+double add_to_vertex_normals(All, const Eigen::Matrix3Xd& x, const WallMesh& mesh, const Eigen::Matrix3Xd& N,
                              const OwnedSpan& span, Eigen::Matrix3Xd& vertex_normal) {
   double six_volume = 0;
   for (Eigen::Index t = span.item_begin; t < span.item_end; ++t) {
     const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
     const Eigen::Vector3d n = N.col(t);
-    if (span.owns(tri[0])) six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
+    if (All::value || span.owns(tri[0])) six_volume += x.col(tri[0]).dot(n);  // a . (b x c) = a . ((b - a) x (c - a))
     for (int v : tri)
-      if (span.owns(v)) vertex_normal.col(v) += n;
+      if (All::value || span.owns(v)) vertex_normal.col(v) += n;
   }
   return six_volume;
 }
@@ -57,7 +58,8 @@ void WallSurface::update(const Eigen::Matrix3Xd& x, const WallMesh& mesh, int th
   });
   for_owned_spans(threads, spans, [&](int t, const OwnedSpan& span) {
     vertex_normal.middleCols(span.target_begin, span.target_end - span.target_begin).setZero();
-    six_volume_[static_cast<std::size_t>(t)] = add_to_vertex_normals(x, mesh, triangles.N, span, vertex_normal);
+    six_volume_[static_cast<std::size_t>(t)] = with_all_or_some(
+        span, [&](auto all) { return add_to_vertex_normals(all, x, mesh, triangles.N, span, vertex_normal); });
   });
   area_m2 = 0.5 * triangles.norm.sum();
   double six_volume = 0;

@@ -32,12 +32,13 @@ void tension_over_length(const WallParticles& w, const WallMesh& mesh, const Bon
 
 // Pass 3: the forces of the span's bonds on the ends it owns; returns the tension x length of the
 // bonds whose first end it owns (each bond counted once).
-double apply_bonds(const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
+template <class All>
+double apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
                    const OwnedSpan& span, Eigen::Matrix3Xd& force) {
   double tension_times_length = 0;
   for (Eigen::Index b = span.item_begin; b < span.item_end; ++b) {
     const int k = mesh.bonds[static_cast<std::size_t>(b)][0], j = mesh.bonds[static_cast<std::size_t>(b)][1];
-    const bool owns_k = span.owns(k), owns_j = span.owns(j);
+    const bool owns_k = All::value || span.owns(k), owns_j = All::value || span.owns(j);
     if (!owns_k && !owns_j) continue;
     const Eigen::Vector3d d = w.x.col(j) - w.x.col(k);
     if (owns_k) tension_times_length += t_over_l[b] * d.squaredNorm();
@@ -64,7 +65,8 @@ double add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondL
     return mesh.bonds[static_cast<std::size_t>(b)];
   });
   for_owned_spans(threads, spans, [&](int t, const OwnedSpan& span) {
-    parts[static_cast<std::size_t>(t)] = apply_bonds(w, mesh, law.damping_N_s_m, t_over_l, span, force);
+    parts[static_cast<std::size_t>(t)] = with_all_or_some(
+        span, [&](auto all) { return apply_bonds(all, w, mesh, law.damping_N_s_m, t_over_l, span, force); });
   });
   double tension_times_length = 0;
   for (double part : parts) tension_times_length += part;
