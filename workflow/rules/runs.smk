@@ -1,27 +1,29 @@
 # One case file per case and per dried state; dry once, compress every case from its dried state.
-import json
 
 wildcard_constraints:
     case="[A-Za-z0-9_.+-]+",
     dried="[A-Za-z0-9_.+-]+",
 
 
+# The JSON is made here, when the workflow is parsed, and written by the shell: no Python process
+# per file (a `script:` job spends most of a second importing Snakemake). A changed case changes the
+# rule's params, which makes Snakemake write the file again.
 rule case_file:
     output:
         f"{OUT}/cases/{{case}}.json",
     params:
-        case=lambda w: CASES[w.case].case,
-    script:
-        "../scripts/case_file.py"
+        json=lambda w: matrix.case_json(CASES[w.case].case),
+    shell:
+        "printf '%s' {params.json:q} > {output:q}"
 
 
 rule dried_case_file:
     output:
         f"{OUT}/cases/dried/{{dried}}.json",
     params:
-        case=lambda w: DRIED[w.dried],
-    script:
-        "../scripts/case_file.py"
+        json=lambda w: matrix.case_json(DRIED[w.dried]),
+    shell:
+        "printf '%s' {params.json:q} > {output:q}"
 
 
 rule dry:
