@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "threads.hpp"
+
 namespace cellsim {
 
 PlateLaw plate_law(const Params& p) {
@@ -18,25 +20,49 @@ PlateOverlap plate_overlap(const Eigen::Vector3d& x, const PlateLaw& law, const 
   return o;
 }
 
-void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates,
-                      Eigen::Matrix3Xd& wall_force) {
-  plates.force_top_N = plates.force_bottom_N = 0;
-  plates.contacts = 0;
-  for (Eigen::Index k = 0; k < wall_x.cols(); ++k) {
+namespace {
+
+struct PlateLoad {
+  double top_N = 0, bottom_N = 0;
+  int contacts = 0;
+  PlateLoad plus(const PlateLoad& later) const {
+    return {top_N + later.top_N, bottom_N + later.bottom_N, contacts + later.contacts};
+  }
+};
+
+// Wall particles [begin, end): Eq 22 added to their forces; returns the load they put on the plates.
+PlateLoad add_block(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const Plates& plates, Eigen::Index begin,
+                    Eigen::Index end, Eigen::Matrix3Xd& wall_force) {
+  PlateLoad load;
+  for (Eigen::Index k = begin; k < end; ++k) {
     const PlateOverlap o = plate_overlap(wall_x.col(k), law, plates);
     if (o.top_m > 0) {
       const double f = law.stiffness_N_m * o.top_m;
       wall_force(2, k) -= f;  // pushed down, away from the top plate
-      plates.force_top_N += f;
-      ++plates.contacts;
+      load.top_N += f;
+      ++load.contacts;
     }
     if (o.bottom_m > 0) {
       const double f = law.stiffness_N_m * o.bottom_m;
       wall_force(2, k) += f;
-      plates.force_bottom_N += f;
-      ++plates.contacts;
+      load.bottom_N += f;
+      ++load.contacts;
     }
   }
+  return load;
+}
+
+}  // namespace
+
+void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force,
+                      int threads) {
+  const PlateLoad load = reduce_blocks<PlateLoad>(
+      threads, wall_x.cols(),
+      [&](Eigen::Index begin, Eigen::Index end) { return add_block(wall_x, law, plates, begin, end, wall_force); },
+      [](const PlateLoad& a, const PlateLoad& b) { return a.plus(b); });
+  plates.force_top_N = load.top_N;
+  plates.force_bottom_N = load.bottom_N;
+  plates.contacts = load.contacts;
 }
 
 }  // namespace cellsim

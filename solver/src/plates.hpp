@@ -27,6 +27,8 @@ struct PlateOverlap {
 PlateOverlap plate_overlap(const Eigen::Vector3d& x, const PlateLaw& law, const Plates& plates);
 
 // Adds the plate forces to wall_force and sets plates.force_top_N, force_bottom_N and contacts.
-void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force);
+// threads: as `cellsim run --threads` (the plate forces are summed in fixed blocks, threads.hpp).
+void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force,
+                      int threads = 1);
 
 }  // namespace cellsim

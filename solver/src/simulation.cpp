@@ -277,7 +277,7 @@ void Simulation::wall_fluid_terms() {
 void Simulation::plate_terms() {
   Plates& plates = s_.plates;
   if (!plates.active) return;
-  add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_);
+  add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
