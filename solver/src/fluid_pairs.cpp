@@ -49,7 +49,8 @@ struct Lanes {
 // (between cores, memory costs far more than a slightly uneven split of the pairs).
 std::vector<int> split_rows(const PairList& pairs, int threads) {
   std::vector<int> first_row(static_cast<std::size_t>(threads) + 1);
-  for (int t = 0; t <= threads; ++t) first_row[static_cast<std::size_t>(t)] = static_cast<int>(static_cast<long>(pairs.rows()) * t / threads);
+  for (int t = 0; t <= threads; ++t)
+    first_row[static_cast<std::size_t>(t)] = static_cast<int>(static_cast<long>(pairs.rows()) * t / threads);
   return first_row;
 }
 
@@ -149,7 +150,8 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.records.resize(kRecord, n + 1);
   out.thread_sums.resize(static_cast<std::size_t>(threads));
   out.first_row = split_rows(pairs, threads);
-  const bool new_halos = out.halo_build != pairs.build || out.halo.size() != static_cast<std::size_t>(threads);
+  const bool new_halos = pairs.build == 0 || out.halo_build != pairs.build ||  // 0: a list not built by NeighbourLists
+                         out.halo.size() != static_cast<std::size_t>(threads);
   out.halo.resize(static_cast<std::size_t>(threads));
   out.halo_mark.resize(static_cast<std::size_t>(threads));
   out.halo_build = pairs.build;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 #include "threads.hpp"
@@ -182,7 +183,8 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   const auto rows = [&](int first, int last, PairList& fluid_fluid, PairList& fluid_wall) {
     list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, first, last, fluid_fluid, fluid_wall);
   };
-  fluid_fluid_.build = fluid_wall_.build = builds_;
+  static std::atomic<long> builds_in_process{0};
+  fluid_fluid_.build = fluid_wall_.build = ++builds_in_process;
   if (threads <= 1 || n < 2 * threads) {
     rows(0, n, fluid_fluid_, fluid_wall_);
     return;

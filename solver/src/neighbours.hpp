@@ -13,7 +13,7 @@ struct PairList {
   std::vector<int> offset;
   std::vector<int> index;
   std::size_t pairs = 0;  // listed pairs, not counting padding
-  long build = 0;         // which build of the lists this is (NeighbourLists::builds), for caches
+  long build = 0;         // a number no other build of any list in this process has, for caches
   int rows() const { return static_cast<int>(offset.size()) - 1; }
 };
 

@@ -1,8 +1,9 @@
 #pragma once
-// Threads for one run (`cellsim run --threads N`): every phase of the step is shared among them.
-// The default is 1, so that a workflow runs one job per core. Results are bit-identical for the
-// same input and thread count; between thread counts they agree to round-off (only the fluid pair
-// sums are added in another order). Without OpenMP (CELLSIM_OPENMP=OFF) only 1 thread is possible.
+// Threads for one run (`cellsim run --threads N`): every phase of the step is shared among them
+// (docs/performance.md gives the rules). The default is 1, so that a workflow runs one job per core.
+// Results are bit-identical for the same input and thread count; between thread counts they agree to
+// round-off (sums over particles are added in blocks of another size). Without OpenMP
+// (CELLSIM_OPENMP=OFF) only 1 thread is possible.
 #include <array>
 #include <functional>
 #include <string>

@@ -7,6 +7,7 @@
 
 #include "bending.hpp"
 #include "cell.hpp"
+#include "fluid_pairs.hpp"
 #include "neighbours.hpp"
 #include "simulation.hpp"
 #include "small_cell.hpp"
@@ -165,4 +166,27 @@ TEST(Threads, NeighbourListsAreTheSameForAnyThreadCount) {
     EXPECT_EQ(many.fluid_wall().index, one.fluid_wall().index) << threads << " threads";
     EXPECT_EQ(many.fluid_wall().pairs, one.fluid_wall().pairs);
   }
+}
+
+TEST(Threads, FluidPairSumsFollowEveryNewList) {
+  // The halos are kept from one step to the next; a rebuilt list (of any NeighbourLists) must renew them.
+  if (!built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
+  const ShakenCell s;
+  const CubicSplineKernel kernel(*s.p.h0_m);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  FluidParticles f;
+  f.x = s.cell.fluid_x;
+  f.v = Eigen::Matrix3Xd::Random(3, f.x.cols());
+  f.m = Eigen::VectorXd::Constant(f.x.cols(), s.cell.fluid_mass_kg);
+  f.rho = Eigen::VectorXd::Constant(f.x.cols(), 1000.0);
+  FluidParticles moved = f;
+  moved.x.array() += 0.3 * *s.p.h0_m * Eigen::Matrix3Xd::Random(3, f.x.cols()).array();
+  NeighbourLists first(0.15 * *s.p.h0_m), second(0.15 * *s.p.h0_m);
+  first.update(f.x, s.wall.x, kernel.support(), 0.0, 2);
+  second.update(moved.x, s.wall.x, kernel.support(), 0.0, 2);
+  FluidRates kept, fresh;
+  fluid_pair_terms(f, first.fluid_fluid(), kernel, eos, 0.1, 2, kept);
+  fluid_pair_terms(moved, second.fluid_fluid(), kernel, eos, 0.1, 2, kept);  // the same scratch, a new list
+  fluid_pair_terms(moved, second.fluid_fluid(), kernel, eos, 0.1, 2, fresh);
+  EXPECT_TRUE(kept.force == fresh.force && kept.drho_dt == fresh.drho_dt);
 }
