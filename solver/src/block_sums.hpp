@@ -4,6 +4,7 @@
 // With T threads the items are cut into T fixed blocks; block b adds into its own zeroed copy, and
 // the copies are then added to the target in block order, each column by one thread. The sums thus
 // depend on T only (bit-identical for the same thread count, round-off apart between counts).
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>

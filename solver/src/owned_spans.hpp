@@ -34,7 +34,7 @@ auto with_all_or_some(const OwnedSpan& span, Loop&& loop) {
 class OwnedSpans {
  public:
   // targets_of(item) gives an item's targets (any container of ints). Computed again only when the
-  // thread count or the sizes change.
+  // thread count or the sizes change: keep one OwnedSpans per loop of one mesh.
   template <class TargetsOf>
   const std::vector<OwnedSpan>& for_threads(int threads, int n_targets, Eigen::Index n_items, TargetsOf&& targets_of) {
     if (threads == threads_ && n_targets == n_targets_ && n_items == n_items_) return spans_;

@@ -74,7 +74,7 @@ void scale(double factor, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd&
 }
 
 // y += factor * rate, for columns [begin, end) (a wall kick, or a drift).
-void move(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
+void add_scaled(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
   y.middleCols(begin, end - begin) += factor * rate.middleCols(begin, end - begin);
 }
 
@@ -287,16 +287,16 @@ void Simulation::kick(double half_dt) {
     kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, begin, end, kick_factor_, s_.fluid);
   });
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    move(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
+    add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
   });
 }
 
 void Simulation::drift(double dt) {
   for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    move(dt, s_.fluid.v, begin, end, s_.fluid.x);
+    add_scaled(dt, s_.fluid.v, begin, end, s_.fluid.x);
   });
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    move(dt, s_.wall.v, begin, end, s_.wall.x);
+    add_scaled(dt, s_.wall.v, begin, end, s_.wall.x);
   });
   s_.time_s += dt;
   Plates& plates = s_.plates;
