@@ -1,6 +1,7 @@
 #pragma once
-// Loops that add each item's share to particles other items share too (bonds, hinges, triangles,
-// wall-fluid pairs), on several threads. With one thread the items add straight into the target.
+// Loops that add each item's share to particles other items share too, where the items are not
+// near their targets in index (the wall-fluid pairs: fluid rows add to wall particles anywhere), on
+// several threads. With one thread the items add straight into the target.
 // With T threads the items are cut into T fixed blocks; block b adds into its own zeroed copy, and
 // the copies are then added to the target in block order, each column by one thread. The sums thus
 // depend on T only (bit-identical for the same thread count, round-off apart between counts).
@@ -29,11 +30,11 @@ class BlockSums {
       for (int b = t; b < threads; b += count) {  // blocks are fixed by `threads`, not by the team
         Matrix& copy = copies_[static_cast<std::size_t>(b)];
         copy.setZero(target.rows(), target.cols());
-        scatter(b, n_items * b / threads, n_items * (b + 1) / threads, copy);
+        scatter(b, block_start(n_items, b, threads), block_start(n_items, b + 1, threads), copy);
       }
       wait_for_all_threads();
-      const Eigen::Index columns = target.size() / target.rows(), first = columns * t / count,
-                         width = columns * (t + 1) / count - first;
+      const Eigen::Index columns = target.size() / target.rows(), first = block_start(columns, t, count),
+                         width = block_start(columns, t + 1, count) - first;
       for (const Matrix& copy : copies_) columns_of(target, first, width) += columns_of(copy, first, width);
     });
   }

@@ -50,7 +50,7 @@ struct Lanes {
 std::vector<int> split_rows(const PairList& pairs, int threads) {
   std::vector<int> first_row(static_cast<std::size_t>(threads) + 1);
   for (int t = 0; t <= threads; ++t)
-    first_row[static_cast<std::size_t>(t)] = static_cast<int>(static_cast<long>(pairs.rows()) * t / threads);
+    first_row[static_cast<std::size_t>(t)] = static_cast<int>(block_start(pairs.rows(), t, threads));
   return first_row;
 }
 

@@ -124,24 +124,25 @@ void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, 
 
 // The threads' parts of one list (parts[2 b + which]) joined in order, each thread copying its own.
 void join_parts(const std::vector<PairList>& parts, int threads, int which, PairList& list) {
-  std::vector<std::size_t> first_index(static_cast<std::size_t>(threads) + 1, 0), first_row(first_index);
+  const auto part_of = [&](int b) -> const PairList& { return parts[static_cast<std::size_t>(2 * b + which)]; };
+  std::vector<int> first_index(static_cast<std::size_t>(threads) + 1, 0), first_row(first_index);
   list.pairs = 0;
   for (int b = 0; b < threads; ++b) {
-    const PairList& part = parts[static_cast<std::size_t>(2 * b + which)];
-    first_index[static_cast<std::size_t>(b) + 1] = first_index[static_cast<std::size_t>(b)] + part.index.size();
-    first_row[static_cast<std::size_t>(b) + 1] = first_row[static_cast<std::size_t>(b)] + static_cast<std::size_t>(part.rows());
-    list.pairs += part.pairs;
+    const auto next = static_cast<std::size_t>(b) + 1;
+    first_index[next] = first_index[next - 1] + static_cast<int>(part_of(b).index.size());
+    first_row[next] = first_row[next - 1] + part_of(b).rows();
+    list.pairs += part_of(b).pairs;
   }
-  list.index.resize(first_index.back());
-  list.offset.resize(first_row.back() + 1);
+  list.index.resize(static_cast<std::size_t>(first_index.back()));
+  list.offset.resize(static_cast<std::size_t>(first_row.back()) + 1);
   list.offset[0] = 0;
   run_on_threads(threads, [&](int t, int count) {
     for (int b = t; b < threads; b += count) {
-      const PairList& part = parts[static_cast<std::size_t>(2 * b + which)];
-      std::copy(part.index.begin(), part.index.end(), list.index.begin() + static_cast<long>(first_index[static_cast<std::size_t>(b)]));
-      const int base = static_cast<int>(first_index[static_cast<std::size_t>(b)]);
+      const PairList& part = part_of(b);
+      const int base = first_index[static_cast<std::size_t>(b)], row = first_row[static_cast<std::size_t>(b)];
+      std::copy(part.index.begin(), part.index.end(), list.index.begin() + base);
       for (int r = 1; r <= part.rows(); ++r)
-        list.offset[first_row[static_cast<std::size_t>(b)] + static_cast<std::size_t>(r)] = base + part.offset[static_cast<std::size_t>(r)];
+        list.offset[static_cast<std::size_t>(row + r)] = base + part.offset[static_cast<std::size_t>(r)];
     }
   });
 }
@@ -194,7 +195,7 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   parts_.resize(static_cast<std::size_t>(2 * threads));
   run_on_threads(threads, [&](int t, int count) {
     for (int b = t; b < threads; b += count)
-      rows(static_cast<int>(static_cast<long>(n) * b / threads), static_cast<int>(static_cast<long>(n) * (b + 1) / threads),
+      rows(static_cast<int>(block_start(n, b, threads)), static_cast<int>(block_start(n, b + 1, threads)),
            parts_[static_cast<std::size_t>(2 * b)], parts_[static_cast<std::size_t>(2 * b + 1)]);
   });
   join_parts(parts_, threads, 0, fluid_fluid_);

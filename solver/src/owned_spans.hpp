@@ -39,12 +39,16 @@ class OwnedSpans {
   const std::vector<OwnedSpan>& for_threads(int threads, int n_targets, Eigen::Index n_items, TargetsOf&& targets_of) {
     if (threads == threads_ && n_targets == n_targets_ && n_items == n_items_) return spans_;
     threads_ = threads, n_targets_ = n_targets, n_items_ = n_items;
+    if (threads == 1) {
+      spans_.assign(1, OwnedSpan{0, n_items, 0, n_targets, true});
+      return spans_;
+    }
     spans_.assign(static_cast<std::size_t>(threads), OwnedSpan{});
     for (int t = 0; t < threads; ++t) {
       auto& s = spans_[static_cast<std::size_t>(t)];
       s.item_begin = n_items;
-      s.target_begin = static_cast<int>(static_cast<long>(n_targets) * t / threads);
-      s.target_end = static_cast<int>(static_cast<long>(n_targets) * (t + 1) / threads);
+      s.target_begin = static_cast<int>(block_start(n_targets, t, threads));
+      s.target_end = static_cast<int>(block_start(n_targets, t + 1, threads));
     }
     for (Eigen::Index item = 0; item < n_items; ++item)
       for (int target : targets_of(item))
@@ -54,7 +58,6 @@ class OwnedSpans {
             s.item_end = std::max(s.item_end, item + 1);
           }
     for (auto& s : spans_) s.item_begin = std::min(s.item_begin, s.item_end);
-    if (threads == 1) spans_[0] = OwnedSpan{0, n_items, 0, n_targets, true};
     return spans_;
   }
 

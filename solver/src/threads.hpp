@@ -46,6 +46,11 @@ inline int team_size() {
 #endif
 }
 
+// The first of n items in block b of `blocks`: block b is [block_start(n, b), block_start(n, b + 1)).
+// Every loop of a step cuts its particles with this one rule, so a thread works on the same
+// particles in each (docs/performance.md, rule 1).
+inline Eigen::Index block_start(Eigen::Index n, int b, int blocks) { return n * b / blocks; }
+
 // Runs body(t, count) on `threads` threads at once, t = 0 .. count - 1 (count: the threads the
 // runtime gave). Defined apart from the loops that use it: a parallel region in a function slows
 // that function's one-thread path (the compiler moves its locals into a shared frame).
@@ -61,7 +66,7 @@ void for_blocks(int threads, Eigen::Index n, Work&& work) {
     work(Eigen::Index{0}, n);
     return;
   }
-  run_on_threads(threads, [&](int t, int count) { work(n * t / count, n * (t + 1) / count); });
+  run_on_threads(threads, [&](int t, int count) { work(block_start(n, t, count), block_start(n, t + 1, count)); });
 }
 
 // Reduces over [0, n) in `threads` fixed blocks: part(begin, end) gives each block's result, and
@@ -72,7 +77,8 @@ Result reduce_blocks(int threads, Eigen::Index n, Part&& part, Combine&& combine
   if (threads <= 1 || n < 2 * threads) return part(Eigen::Index{0}, n);
   std::array<Result, kMaxThreads> parts;
   run_on_threads(threads, [&](int t, int count) {
-    for (int b = t; b < threads; b += count) parts[static_cast<std::size_t>(b)] = part(n * b / threads, n * (b + 1) / threads);
+    for (int b = t; b < threads; b += count)
+      parts[static_cast<std::size_t>(b)] = part(block_start(n, b, threads), block_start(n, b + 1, threads));
   });
   Result result = parts[0];
   for (int b = 1; b < threads; ++b) result = combine(result, parts[static_cast<std::size_t>(b)]);
