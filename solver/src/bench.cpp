@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numeric>
 
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "simulation.hpp"
 
 namespace cellsim {
@@ -20,7 +20,7 @@ std::size_t BenchResult::median_repeat() const {
 
 BenchResult measure_steps(const Params& case_params, long steps, int repeats, int threads) {
   Params p = case_params;
-  const Cell cell = build_cell(p);
+  const Tissue cell = build_tissue(p);
   BenchResult r;
   r.fluid_particles = cell.fluid_x.cols();
   r.wall_particles = cell.wall_x.cols();

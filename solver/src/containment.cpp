@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace cellsim {
 namespace {
@@ -11,7 +10,9 @@ namespace {
 // through a shared edge or vertex counts exactly one of the triangles that meet there.
 bool covers(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& p) {
   const auto edge = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v, const Eigen::Vector2d& q) {
-    const double e = (v.x() - u.x()) * (q.y() - u.y()) - (v.y() - u.y()) * (q.x() - u.x());
+    // At q = v the two products are equal, but a fused multiply-add (which the compiler may use)
+    // leaves their rounding error instead of 0, and the tie rule would not apply: say 0 outright.
+    const double e = q == v ? 0.0 : (v.x() - u.x()) * (q.y() - u.y()) - (v.y() - u.y()) * (q.x() - u.x());
     if (e != 0) return e > 0;
     return (v.y() > u.y()) || (v.y() == u.y() && v.x() < u.x());  // top-left tie rule
   };
@@ -23,16 +24,18 @@ bool covers(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vec
 
 }  // namespace
 
-int first_particle_outside(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const WallMesh& mesh) {
-  if (fluid_x.cols() == 0) return -1;
-  const Eigen::Vector2d lo = wall_x.topRows<2>().rowwise().minCoeff(), hi = wall_x.topRows<2>().rowwise().maxCoeff();
-  const int bins = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(mesh.triangles.size()) / 4.0)));
-  const Eigen::Vector2d span = (hi - lo).cwiseMax(1e-30);
-  const auto bin_of = [&](double v, int d) {
-    return std::clamp(static_cast<int>((v - lo[d]) / span[d] * bins), 0, bins - 1);
-  };
-  std::vector<std::vector<int>> bin_triangles(static_cast<std::size_t>(bins * bins));
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+ClosedSurface::ClosedSurface(const Eigen::Matrix3Xd& wall_x, const WallMesh& mesh, int cell)
+    : wall_x_(wall_x), mesh_(mesh) {
+  const int first = mesh.cell_triangles[cell], last = mesh.cell_triangles[cell + 1];
+  lo_ = hi_ = wall_x.col(mesh.triangles[first][0]);
+  for (int t = first; t < last; ++t)
+    for (int v : mesh.triangles[t]) {
+      lo_ = lo_.cwiseMin(wall_x.col(v));
+      hi_ = hi_.cwiseMax(wall_x.col(v));
+    }
+  bins_ = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(last - first) / 4.0)));
+  bin_triangles_.resize(static_cast<std::size_t>(bins_ * bins_));
+  for (int t = first; t < last; ++t) {
     const auto& tri = mesh.triangles[t];
     Eigen::Vector2d tlo = wall_x.col(tri[0]).head<2>(), thi = tlo;
     for (int v : tri) {
@@ -41,24 +44,44 @@ int first_particle_outside(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
     }
     for (int bx = bin_of(tlo.x(), 0); bx <= bin_of(thi.x(), 0); ++bx)
       for (int by = bin_of(tlo.y(), 1); by <= bin_of(thi.y(), 1); ++by)
-        bin_triangles[static_cast<std::size_t>(by * bins + bx)].push_back(static_cast<int>(t));
+        bin_triangles_[static_cast<std::size_t>(by * bins_ + bx)].push_back(t);
   }
-  for (Eigen::Index i = 0; i < fluid_x.cols(); ++i) {
-    const Eigen::Vector3d p = fluid_x.col(i);
-    if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y()) return static_cast<int>(i);
-    int crossings = 0;
-    for (int t : bin_triangles[static_cast<std::size_t>(bin_of(p.y(), 1) * bins + bin_of(p.x(), 0))]) {
-      const auto& tri = mesh.triangles[static_cast<std::size_t>(t)];
-      const Eigen::Vector3d a = wall_x.col(tri[0]), b = wall_x.col(tri[1]), c = wall_x.col(tri[2]);
-      if (!covers(a.head<2>(), b.head<2>(), c.head<2>(), p.head<2>())) continue;
-      // Height of the triangle's plane above p's xy position.
-      const Eigen::Vector3d n = (b - a).cross(c - a);
-      const double z_plane = a.z() - (n.x() * (p.x() - a.x()) + n.y() * (p.y() - a.y())) / n.z();
-      if (z_plane > p.z()) ++crossings;
-    }
-    if (crossings % 2 == 0) return static_cast<int>(i);
+}
+
+int ClosedSurface::bin_of(double v, int d) const {
+  const double span = std::max(hi_[d] - lo_[d], 1e-30);
+  return std::clamp(static_cast<int>((v - lo_[d]) / span * bins_), 0, bins_ - 1);
+}
+
+bool ClosedSurface::box_overlaps(const ClosedSurface& other) const {
+  return (lo_.array() <= other.hi_.array()).all() && (other.lo_.array() <= hi_.array()).all();
+}
+
+bool ClosedSurface::contains(const Eigen::Vector3d& p) const {
+  if (p.x() < lo_.x() || p.x() > hi_.x() || p.y() < lo_.y() || p.y() > hi_.y()) return false;
+  int crossings = 0;
+  for (int t : bin_triangles_[static_cast<std::size_t>(bin_of(p.y(), 1) * bins_ + bin_of(p.x(), 0))]) {
+    const auto& tri = mesh_.triangles[static_cast<std::size_t>(t)];
+    const Eigen::Vector3d a = wall_x_.col(tri[0]), b = wall_x_.col(tri[1]), c = wall_x_.col(tri[2]);
+    if (!covers(a.head<2>(), b.head<2>(), c.head<2>(), p.head<2>())) continue;
+    // Height of the triangle's plane above p's xy position.
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double z_plane = a.z() - (n.x() * (p.x() - a.x()) + n.y() * (p.y() - a.y())) / n.z();
+    if (z_plane > p.z()) ++crossings;
   }
+  return crossings % 2 == 1;
+}
+
+int first_particle_outside(const Eigen::Matrix3Xd& points, Eigen::Index begin, Eigen::Index end,
+                           const ClosedSurface& wall) {
+  for (Eigen::Index i = begin; i < end; ++i)
+    if (!wall.contains(points.col(i))) return static_cast<int>(i);
   return -1;
+}
+
+int first_particle_outside(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const WallMesh& mesh) {
+  if (fluid_x.cols() == 0) return -1;
+  return first_particle_outside(fluid_x, 0, fluid_x.cols(), ClosedSurface(wall_x, mesh, 0));
 }
 
 }  // namespace cellsim

@@ -1,5 +1,6 @@
 #include "hull.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -51,6 +52,33 @@ std::vector<std::array<int, 3>> convex_hull_triangles(const Eigen::Matrix3Xd& po
     if (!used[static_cast<std::size_t>(i)])
       throw InputError("wall point " + std::to_string(i) + " is not on the convex hull; use more or fewer wall points");
   return triangles;
+}
+
+namespace {
+// Qhull's hull of points (dim x n, column-major), measured: its volume (area in 2-D), NaN if it fails.
+double hull_measure(const double* data, int dim, int n) {
+  if (n <= dim) return 0.0;
+  std::vector<coordT> coords(data, data + dim * n);
+  qhT qh_storage;
+  qhT* qh = &qh_storage;
+  qh_zero(qh, stderr);
+  char options[] = "qhull";
+  const int exitcode = qh_new_qhull(qh, dim, n, coords.data(), False, options, nullptr, stderr);
+  if (exitcode == 0) qh_getarea(qh, qh->facet_list);  // sums the facets' areas and volumes
+  const double measure = exitcode == 0 ? qh->totvol : std::nan("");
+  int curlong = 0, totlong = 0;
+  qh_freeqhull(qh, !qh_ALL);
+  qh_memfreeshort(qh, &curlong, &totlong);
+  return measure;
+}
+}  // namespace
+
+double convex_hull_volume(const Eigen::Matrix3Xd& points) {
+  return hull_measure(points.data(), 3, static_cast<int>(points.cols()));
+}
+
+double convex_hull_area_2d(const Eigen::Matrix2Xd& points) {
+  return hull_measure(points.data(), 2, static_cast<int>(points.cols()));
 }
 
 }  // namespace cellsim

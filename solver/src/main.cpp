@@ -8,7 +8,7 @@
 #include "case_file.hpp"
 #include "bench.hpp"
 #include "case_schema.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "errors.hpp"
 #include "measures.hpp"
 #include "run.hpp"
@@ -151,8 +151,8 @@ int dispatch(int argc, char** argv) {
   }
   if (a.command == "validate") {
     cellsim::Params p = load(a);
-    const cellsim::Cell cell = cellsim::build_cell(p);  // resolves derived values, checks the geometry
-    cellsim::Simulation check(p, cell);                    // and the time step's static limit
+    const cellsim::Tissue tissue = cellsim::build_tissue(p);  // resolves derived values, checks the geometry
+    cellsim::Simulation check(p, tissue);                        // and the time step's static limit
     std::cout << cellsim::case_to_json(p).dump(2) << "\n";
     return 0;
   }

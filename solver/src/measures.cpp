@@ -1,5 +1,6 @@
 #include "measures.hpp"
 
+#include "hull.hpp"
 #include "plates.hpp"
 
 #include <cmath>
@@ -11,6 +12,26 @@
 namespace cellsim {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Each cell's volume, mean pressure and fluid mass; a tissue's intact bonds, hull volume and porosity.
+void measure_cells(const State& s, const CellRanges& cells, const WallSurface& surface, const EquationOfState& eos,
+                   Record& r) {
+  const auto& f = s.fluid;
+  r.cell_volume_m3 = surface.cell_volume_m3;
+  for (int c = 0; c < cells.count(); ++c) {
+    double pressure_sum = 0;
+    for (Eigen::Index i = cells.fluid[c]; i < cells.fluid[c + 1]; ++i) pressure_sum += eos.pressure(f.rho[i]);
+    r.cell_mean_pressure_Pa.push_back(pressure_sum / static_cast<double>(cells.fluid_count(c)));
+    r.cell_fluid_mass_kg.push_back(f.m.segment(cells.fluid[c], cells.fluid_count(c)).sum());
+  }
+  r.lamella_intact = 0;
+  for (char intact : s.lamella_intact) r.lamella_intact += intact;
+  r.tissue_volume_m3 = r.porosity = kNaN;
+  if (cells.count() > 1) {
+    r.tissue_volume_m3 = convex_hull_volume(s.wall.x);
+    r.porosity = 1.0 - surface.volume_m3 / r.tissue_volume_m3;
+  }
+}
 }
 
 const std::vector<Quantity>& quantities() {
@@ -61,15 +82,34 @@ const std::vector<Quantity>& quantities() {
       {"plate_stress_Pa", "Pa", "F_top / (plate length x width)", &Record::plate_stress_Pa},
       {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
       {"contact_stress_Pa", "Pa", "F_top / top contact area (NaN without contact)", &Record::contact_stress_Pa},
+      {"footprint_stress_Pa", "Pa",
+       "F_top / the footprint: the area of the wall's outline seen from above when compression starts (a tissue's stress)",
+       &Record::footprint_stress_Pa},
+      {"lamella_intact", "1", "middle-lamella bonds between cells not yet broken (0 for one cell)",
+       &Record::lamella_intact},
+      {"tissue_volume_m3", "m^3", "volume of the convex hull of every wall particle (a tissue's; NaN for one cell)",
+       &Record::tissue_volume_m3},
+      {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
+       &Record::porosity},
+  };
+  return q;
+}
+
+const std::vector<CellQuantity>& cell_quantities() {
+  static const std::vector<CellQuantity> q = {
+      {"volume_m3", "m^3", "each cell's enclosed volume (its own wall's signed tetrahedra)", &Record::cell_volume_m3},
+      {"mean_pressure_Pa", "Pa", "each cell's mean fluid EOS pressure (Eq 7)", &Record::cell_mean_pressure_Pa},
+      {"fluid_mass_kg", "kg", "each cell's fluid mass (Eq 11)", &Record::cell_fluid_mass_kg},
   };
   return q;
 }
 
 double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
 
-Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
-               const EquationOfState& eos, const LoadPartition& load) {
+Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
+               const Params& p, const EquationOfState& eos, const LoadPartition& load) {
   Record r{};
+  measure_cells(s, cells, surface, eos, r);
   const auto& f = s.fluid;
   const auto& w = s.wall;
   r.time_s = s.time_s;
@@ -105,6 +145,7 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
     r.contact_area_m2 = r.contact_count = r.contact_area_top_m2 = kNaN;
     r.pressure_load_N = r.load_fluid_N = r.load_wall_N = kNaN;
     r.nominal_strain = r.plate_strain = r.plate_stress_Pa = r.section_stress_Pa = r.contact_stress_Pa = kNaN;
+    r.footprint_stress_Pa = kNaN;
     return r;
   }
   r.plate_top_z_m = pl.top_z_m;
@@ -130,6 +171,7 @@ Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface,
   r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
   r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
   r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
+  r.footprint_stress_Pa = pl.force_top_N / pl.footprint_m2;
   r.contact_area_top_m2 = contact_area_top;
   r.pressure_load_N = r.mean_pressure_Pa * contact_area_top;
   r.load_fluid_N = load.fluid_push_N;
@@ -143,6 +185,8 @@ std::string output_reference_markdown() {
   std::ostringstream s;
   s << "| dataset | unit | definition |\n|---|---|---|\n";
   for (const auto& q : quantities()) s << "| `/timeseries/" << q.name << "` | " << q.unit << " | " << q.definition << " |\n";
+  for (const auto& q : cell_quantities())
+    s << "| `/cells/" << q.name << "` | " << q.unit << " | " << q.definition << ", records x cells |\n";
   return s.str();
 }
 

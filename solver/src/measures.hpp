@@ -9,6 +9,7 @@
 #include "params.hpp"
 #include "state.hpp"
 #include "surface.hpp"
+#include "tissue.hpp"
 #include "wall_mesh.hpp"
 
 namespace cellsim {
@@ -23,7 +24,10 @@ struct Record {
   double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
   double contact_area_m2, contact_count, contact_area_top_m2;
   double pressure_load_N, load_fluid_N, load_wall_N;
-  double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa;
+  double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa, footprint_stress_Pa;
+  double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
+  // Each cell's (model.md §10), in cell order.
+  std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;
 };
 
 struct Quantity {
@@ -34,6 +38,15 @@ struct Quantity {
 };
 const std::vector<Quantity>& quantities();
 
+// The per-cell series: one value per cell in each record (written as records x cells).
+struct CellQuantity {
+  std::string name;  // dataset name under /cells
+  std::string unit;
+  std::string definition;
+  std::vector<double> Record::*member;
+};
+const std::vector<CellQuantity>& cell_quantities();
+
 // H: max z - min z of the wall particles; the nominal strain (H_c - H) / H_c (model.md §8).
 double cell_height_m(const Eigen::Matrix3Xd& wall_x);
 inline double nominal_strain(double contact_height_m, double height_m) {
@@ -42,8 +55,8 @@ inline double nominal_strain(double contact_height_m, double height_m) {
 
 // The record of state s; area, volume and normals come from its wall surface (surface.hpp), the
 // top plate's load partition from the forces of the last step (load_partition.hpp).
-Record measure(const State& s, const WallMesh& mesh, const WallSurface& surface, const Params& p,
-               const EquationOfState& eos, const LoadPartition& load);
+Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
+               const Params& p, const EquationOfState& eos, const LoadPartition& load);
 
 std::string output_reference_markdown();
 

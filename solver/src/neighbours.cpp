@@ -87,10 +87,18 @@ double max_displacement(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& the
   return std::sqrt(max2);
 }
 
+// Which cell each particle is in, for a tissue's lists (null pointers: one cell, nothing filtered).
+struct CellOf {
+  const int* fluid = nullptr;
+  const int* wall = nullptr;
+  bool same_fluid(int i, int j) const { return !fluid || fluid[i] == fluid[j]; }
+  bool own_wall(int i, int k) const { return !fluid || fluid[i] == wall[k]; }
+};
+
 // Rows [first, last) of both lists, each into `fluid_fluid` and `fluid_wall` (offsets from 0).
 void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const CellGrid& fluid_grid,
-               const CellGrid& wall_grid, double ff2, double fw2, int first, int last, PairList& fluid_fluid,
-               PairList& fluid_wall) {
+               const CellGrid& wall_grid, double ff2, double fw2, CellOf cell_of, int first, int last,
+               PairList& fluid_fluid, PairList& fluid_wall) {
   const int n = static_cast<int>(fluid_x.cols());
   fluid_fluid.offset.assign(1, 0);
   fluid_fluid.index.clear();
@@ -103,7 +111,7 @@ void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, 
     const Eigen::Vector3d xi = fluid_x.col(i);
     row.clear();
     fluid_grid.for_each_near(xi, [&](int j) {
-      if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2) row.push_back(j);
+      if (j > i && (fluid_x.col(j) - xi).squaredNorm() < ff2 && cell_of.same_fluid(i, j)) row.push_back(j);
     });
     std::sort(row.begin(), row.end());  // ascending j: memory order, and independent of binning
     fluid_fluid.pairs += row.size();
@@ -113,13 +121,33 @@ void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, 
 
     row.clear();
     wall_grid.for_each_near(xi, [&](int k) {
-      if ((wall_x.col(k) - xi).squaredNorm() < fw2) row.push_back(k);
+      if ((wall_x.col(k) - xi).squaredNorm() < fw2 && cell_of.own_wall(i, k)) row.push_back(k);
     });
     std::sort(row.begin(), row.end());
     fluid_wall.pairs += row.size();
     fluid_wall.index.insert(fluid_wall.index.end(), row.begin(), row.end());
     fluid_wall.offset.push_back(static_cast<int>(fluid_wall.index.size()));
   }
+}
+
+// Wall particles l > k of other cells within sqrt(ww2) of k, for every k (one thread: built only for
+// tissues, and only when the lists are).
+void list_wall_wall(const Eigen::Matrix3Xd& wall_x, const CellGrid& grid, double ww2, const int* cell_of_wall,
+                    PairList& list) {
+  list.offset.assign(1, 0);
+  list.index.clear();
+  std::vector<int> row;
+  for (int k = 0; k < static_cast<int>(wall_x.cols()); ++k) {
+    const Eigen::Vector3d xk = wall_x.col(k);
+    row.clear();
+    grid.for_each_near(xk, [&](int l) {
+      if (l > k && cell_of_wall[l] != cell_of_wall[k] && (wall_x.col(l) - xk).squaredNorm() < ww2) row.push_back(l);
+    });
+    std::sort(row.begin(), row.end());
+    list.index.insert(list.index.end(), row.begin(), row.end());
+    list.offset.push_back(static_cast<int>(list.index.size()));
+  }
+  list.pairs = list.index.size();
 }
 
 // The threads' parts of one list (parts[2 b + which]) joined in order, each thread copying its own.
@@ -149,6 +177,13 @@ void join_parts(const std::vector<PairList>& parts, int threads, int which, Pair
 
 }  // namespace
 
+void NeighbourLists::set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m) {
+  cell_of_fluid_ = std::move(cell_of_fluid);
+  cell_of_wall_ = std::move(cell_of_wall);
+  wall_wall_cutoff_ = wall_wall_cutoff_m;
+  stale_ = true;
+}
+
 bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
                             double wall_fluid_cutoff, int threads) {
   fluid_cutoff_ = fluid_cutoff;
@@ -157,7 +192,9 @@ bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix
     // A pair now within the cut-off was within cut-off + 2 max_disp at the build.
     const double moved = 2.0 * std::max(max_displacement(fluid_x, fluid_at_build_, threads),
                                         max_displacement(wall_x, wall_at_build_, threads));
-    if (fluid_cutoff + moved <= list_fluid_cutoff_ && wall_fluid_cutoff + moved <= list_wall_cutoff_) return false;
+    if (fluid_cutoff + moved <= list_fluid_cutoff_ && wall_fluid_cutoff + moved <= list_wall_cutoff_ &&
+        (cell_of_wall_.empty() || wall_wall_cutoff_ + moved <= wall_wall_cutoff_ + skin_))
+      return false;
   }
   build(fluid_x, wall_x, threads);
   return true;
@@ -181,11 +218,16 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   const CellGrid wall_grid(wall_x, lo, hi, list_wall_cutoff_);
 
   const int n = static_cast<int>(fluid_x.cols());
+  const CellOf cell_of = cell_of_fluid_.empty() ? CellOf{} : CellOf{cell_of_fluid_.data(), cell_of_wall_.data()};
   const auto rows = [&](int first, int last, PairList& fluid_fluid, PairList& fluid_wall) {
-    list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, first, last, fluid_fluid, fluid_wall);
+    list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, cell_of, first, last, fluid_fluid, fluid_wall);
   };
   static std::atomic<long> builds_in_process{0};
-  fluid_fluid_.build = fluid_wall_.build = ++builds_in_process;
+  fluid_fluid_.build = fluid_wall_.build = wall_wall_.build = ++builds_in_process;
+  if (!cell_of_wall_.empty()) {
+    const double ww = wall_wall_cutoff_ + skin_;
+    list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww), ww * ww, cell_of_wall_.data(), wall_wall_);
+  }
   if (threads <= 1 || n < 2 * threads) {
     rows(0, n, fluid_fluid_, fluid_wall_);
     return;

@@ -31,8 +31,14 @@ class NeighbourLists {
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
 
+  // A tissue (model.md §10): fluid pairs only within a cell, fluid-wall pairs only with the cell's own
+  // wall, and a third list of wall pairs of different cells within wall_wall_cutoff_m. Not called for
+  // one cell: then nothing is filtered and the wall-wall list stays empty.
+  void set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m);
+
   const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list (j > i), rows padded
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
+  const PairList& wall_wall() const { return wall_wall_; }      // half list (l > k), of different cells
   long builds() const { return builds_; }
 
  private:
@@ -42,7 +48,9 @@ class NeighbourLists {
   double list_fluid_cutoff_ = 0, list_wall_cutoff_ = 0;  // cut-off + skin at the last build
   double fluid_cutoff_ = 0, wall_fluid_cutoff_ = 0;
   Eigen::Matrix3Xd fluid_at_build_, wall_at_build_;
-  PairList fluid_fluid_, fluid_wall_;
+  PairList fluid_fluid_, fluid_wall_, wall_wall_;
+  std::vector<int> cell_of_fluid_, cell_of_wall_;  // empty: one cell
+  double wall_wall_cutoff_ = 0;
   std::vector<PairList> parts_;  // each thread's rows of both lists, while building with threads
   long builds_ = 0;
   bool stale_ = true;  // no valid list yet, or invalidated

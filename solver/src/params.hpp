@@ -11,6 +11,9 @@ using Choice = int;  // the index of a choice key's name (case_schema.cpp lists 
 // coupling.model (model.md §4): how the wall and the fluid push on each other.
 enum CouplingModel : Choice { kLennardJones = 0, kPressure = 1 };
 
+// tissue.packing (model.md §10): where the cells' centres sit.
+enum Packing : Choice { kCubicPacking = 0, kClosePacking = 1 };
+
 struct Params {
   // cell geometry and particles (model.md §1)
   double diameter_m = 0;                // D0 = 2R
@@ -20,6 +23,17 @@ struct Params {
   double fluid_density_kg_m3 = 0;       // rho0
   double wall_mass_fraction = 0;        // wall mass / fluid mass (Table 3: 0.1)
   std::optional<double> fill_gap_m;     // fluid fill radius is R - fill_gap (auto: 0.7 r0, or dx/2 for the pressure coupling)
+
+  // tissue of cells (model.md §10); 1 x 1 x 1 is the single cell of the paper
+  std::int64_t cells_x = 1, cells_y = 1, cells_z = 1;  // cells along each axis (layers along z)
+  Choice packing = kCubicPacking;
+  double centre_distance_over_diameter = 0;  // centre distance of touching neighbours / D0
+  double diameter_spread = 0;           // standard deviation of the cells' diameters / D0
+  std::int64_t tissue_seed = 0;         // of the diameters' spread
+  std::optional<double> wall_gap_m;     // between facing walls' particle layers (auto: t0)
+  double contact_stiffness_N_m = 0;     // wall-wall repulsion between cells, Eq 22's form
+  double lamella_stiffness_N_m = 0;     // middle-lamella bond spring
+  double lamella_strength_Pa = 0;       // a bond breaks when its tension / owned area exceeds this
 
   // fluid, Table 1
   double viscosity_Pa_s = 0;            // mu, Eq 4

@@ -7,12 +7,13 @@
 namespace cellsim {
 
 enum class Phase : int {
-  Geometry, Neighbours, FluidPairs, MassTransfer, WallBonds, Bending, WallFluid, Plates, Integration, Recording,
-  Count
+  Geometry, Neighbours, FluidPairs, MassTransfer, WallBonds, Bending, CellContact, WallFluid, Plates, Integration,
+  Recording, Count
 };
 inline constexpr const char* kPhaseNames[] = {"geometry (area, volume, h)", "neighbour lists",
                                               "fluid pairs (continuity, pressure, viscous)", "mass transfer",
                                               "wall bonds (stiff, contraction, damping)", "bending",
+                                              "between cells (contact, middle lamella)",
                                               "wall-fluid (LJ)", "plates", "integration and checks",
                                               "recording (measures, containment)"};
 

@@ -69,7 +69,8 @@ void ResultFile::write_header(const nlohmann::json& resolved_case, int threads) 
 
 void ResultFile::write_drying_summary(const DryingSummary& d) { cellsim::write_drying_summary(file_.id(), d); }
 
-void ResultFile::write_mesh(const WallMesh& mesh, long n_fluid) {
+void ResultFile::write_mesh(const WallMesh& mesh, const CellRanges& cells, const std::vector<LamellaBond>& lamella) {
+  const long n_fluid = static_cast<long>(cells.fluid.back());
   h5::Handle g = h5::create_group(file_.id(), "mesh");
   std::vector<std::int32_t> tri, bonds, hinges, fluid_vertices;
   for (const auto& t : mesh.triangles) tri.insert(tri.end(), t.begin(), t.end());
@@ -81,6 +82,20 @@ void ResultFile::write_mesh(const WallMesh& mesh, long n_fluid) {
   h5::write(g.id(), "hinges", hinges, {mesh.hinges.size(), 4});
   h5::write(g.id(), "bond_rest_length", mesh.rest_length_m, {mesh.rest_length_m.size()});
   h5::write(g.id(), "fluid_vertices", fluid_vertices, {fluid_vertices.size(), 1});
+  const auto as_int32 = [](const std::vector<int>& v) { return std::vector<std::int32_t>(v.begin(), v.end()); };
+  h5::write(g.id(), "wall_cell", as_int32(cells.cell_of_wall()), {static_cast<std::size_t>(cells.wall.back())});
+  h5::write(g.id(), "fluid_cell", as_int32(cells.cell_of_fluid()), {static_cast<std::size_t>(n_fluid)});
+  h5::set_dataset_attr(g.id(), "wall_cell", "description", "the cell of each wall particle (0 for one cell)");
+  h5::set_dataset_attr(g.id(), "fluid_cell", "description", "the cell of each fluid particle (0 for one cell)");
+  if (!lamella.empty()) {
+    std::vector<std::int32_t> pairs;
+    std::vector<double> length;
+    for (const auto& b : lamella) pairs.insert(pairs.end(), {b.a, b.b}), length.push_back(b.length_m);
+    h5::write(g.id(), "lamella", pairs, {lamella.size(), 2});
+    h5::write(g.id(), "lamella_rest_length", length, {lamella.size()});
+    h5::set_dataset_attr(g.id(), "lamella", "description", "middle-lamella bonds: wall particles of two cells");
+    h5::set_dataset_attr(g.id(), "lamella_rest_length", "unit", "m");
+  }
   h5::set_dataset_attr(g.id(), "triangles", "description", "wall particle indices, outward (counter-clockwise)");
   h5::set_dataset_attr(g.id(), "hinges", "description", "edge (a, b) shared by triangles (a, b, c) and (b, a, d)");
   h5::set_dataset_attr(g.id(), "bond_rest_length", "unit", "m");
@@ -126,6 +141,17 @@ void ResultFile::write_timeseries(const std::vector<Record>& records) {
     h5::write(g.id(), q.name, column, {column.size()});
     h5::set_dataset_attr(g.id(), q.name, "unit", q.unit);
     h5::set_dataset_attr(g.id(), q.name, "definition", q.definition);
+  }
+  // Each cell's series: records x cells.
+  h5::Handle cells = h5::create_group(file_.id(), "cells");
+  const std::size_t n_cells = records.empty() ? 0 : records.front().cell_volume_m3.size();
+  for (const auto& q : cell_quantities()) {
+    std::vector<double> table;
+    table.reserve(records.size() * n_cells);
+    for (const auto& r : records) table.insert(table.end(), (r.*q.member).begin(), (r.*q.member).end());
+    h5::write(cells.id(), q.name, table, {records.size(), n_cells});
+    h5::set_dataset_attr(cells.id(), q.name, "unit", q.unit);
+    h5::set_dataset_attr(cells.id(), q.name, "definition", q.definition);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "h5.hpp"
 #include "measures.hpp"
 #include "state.hpp"
+#include "tissue.hpp"
 #include "wall_mesh.hpp"
 #include "xdmf.hpp"
 
@@ -25,7 +26,8 @@ class ResultFile {
   ResultFile& operator=(const ResultFile&) = delete;
 
   void write_header(const nlohmann::json& resolved_case, int threads);  // threads: of the fluid pair loop
-  void write_mesh(const WallMesh& mesh, long n_fluid);
+  // The wall's triangles, bonds and hinges, each particle's cell, and a tissue's middle-lamella bonds.
+  void write_mesh(const WallMesh& mesh, const CellRanges& cells, const std::vector<LamellaBond>& lamella);
   void write_drying_summary(const DryingSummary& d);
   void write_snapshot(const State& s, const EquationOfState& eos);
   // Time series, the state to continue from, completed = 1; then rename and write the sidecars.

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "errors.hpp"
 #include "progress.hpp"
 #include "result_file.hpp"
@@ -59,7 +59,7 @@ void check_same_drying(const nlohmann::json& saved, const nlohmann::json& now, c
 }  // namespace
 
 void run_case(Params p, const RunOptions& options) {
-  const Cell cell = build_cell(p);  // fills in derived parameters
+  const Tissue tissue = build_tissue(p);  // fills in derived parameters
   const nlohmann::json resolved = case_to_json(p);
   SavedRun dried;
   if (!options.from_path.empty()) {
@@ -69,11 +69,11 @@ void run_case(Params p, const RunOptions& options) {
       throw InputError("--from '" + options.from_path + "' holds a state in compression, not the end of drying "
                        "(run the case with compression.steps = 0)");
   }
-  Simulation sim(p, cell);  // refuses a time step over the wall-spring limit, before any output
+  Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);
   ResultFile out(options.output_path);
   out.write_header(resolved, options.threads);
-  out.write_mesh(cell.mesh, static_cast<long>(p.n_fluid));
+  out.write_mesh(tissue.mesh, tissue.cells, tissue.lamella);
 
   std::vector<Record> records;
   DryingSummary drying;

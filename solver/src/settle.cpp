@@ -47,8 +47,12 @@ SettleReport settle(Simulation& sim, std::int64_t max_iterations, double toleran
       sim.refresh_rates();
       if (report.iterations % kMassUpdateEvery == kMassUpdateEvery - 1) {
         // The wall-pressure closure's target, reached at once: the push on the wall scales as m^2.
-        const double ratio = s.wall_pressure_Pa / sim.mean_fluid_pressure_Pa();
-        if (ratio > 0) f.m *= 1.0 / std::sqrt(ratio);
+        const std::vector<double> mean_pressure = sim.cell_mean_fluid_pressure_Pa();
+        const CellRanges& cells = sim.cells();
+        for (int c = 0; c < cells.count(); ++c) {
+          const double ratio = sim.cell_wall_pressure_Pa()[c] / mean_pressure[c];
+          if (ratio > 0) f.m.segment(cells.fluid[c], cells.fluid_count(c)) *= 1.0 / std::sqrt(ratio);
+        }
       }
       af = sim.fluid_force().array().rowwise() / f.m.transpose().array();
       aw = sim.wall_force() / (w.mass_kg * kWallPseudoMassScale);

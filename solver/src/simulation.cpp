@@ -4,8 +4,10 @@
 #include <functional>
 #include <sstream>
 
+#include "cell_blocks.hpp"
 #include "containment.hpp"
 #include "drying.hpp"
+#include "hull.hpp"
 #include "errors.hpp"
 #include "mass_transfer.hpp"
 #include "plates.hpp"
@@ -21,13 +23,22 @@ namespace {
 // Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
 constexpr double kSkinOverH0 = 0.15;
 
+// A wall particle of a tissue faces at most about this many particles of a neighbour's wall within the
+// wall gap (the layers are one gap apart, their particles about one gap apart within each layer).
+constexpr double kContactPartners = 3;
+
 // Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
-double wall_spring_limit(const WallMesh& mesh, const Params& p, double wall_mass, long n_wall) {
-  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), 0.0);
+double wall_spring_limit(const WallMesh& mesh, const std::vector<LamellaBond>& lamella, const Params& p,
+                         double wall_mass, long n_wall) {
+  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m);
   const double k_bond = p.contraction_stiffness_N_m + 2.0 * p.G_Pa * p.thickness_m / std::sqrt(3.0);
   for (const auto& b : mesh.bonds) {
     k_sum[static_cast<std::size_t>(b[0])] += k_bond;
     k_sum[static_cast<std::size_t>(b[1])] += k_bond;
+  }
+  for (const auto& b : lamella) {
+    k_sum[static_cast<std::size_t>(b.a)] += p.lamella_stiffness_N_m;
+    k_sum[static_cast<std::size_t>(b.b)] += p.lamella_stiffness_N_m;
   }
   double k_max = p.plate_stiffness_N_m;
   for (double k : k_sum) k_max = std::max(k_max, k + p.plate_stiffness_N_m);
@@ -46,11 +57,11 @@ bool all_finite(const Eigen::DenseBase<Derived>& a) {
 // of their own, with the scalars as value parameters: inside a lambda that other threads also run,
 // the compiler would re-read them after every store and not vectorise.
 
-// Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
-void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double area_m2, double Lp_m_per_s_Pa,
+// Eq 11 for the fluid particles [begin, end) of a cell of n fluid particles and wall area area_m2,
+// and their share of the density rate (Eq 9).
+void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double area_m2, int n, double Lp_m_per_s_Pa,
                 double osmotic_Pa, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& dm_dt,
                 Eigen::VectorXd& drho_dt) {
-  const int n = static_cast<int>(f.size());
   for (Eigen::Index i = begin; i < end; ++i) {
     dm_dt[i] = mass_rate(area_m2, Lp_m_per_s_Pa, f.rho[i], n, pressure[i], osmotic_Pa);
     drho_dt[i] = density_rate(drho_dt[i], f.rho[i], f.m[i], dm_dt[i]);
@@ -129,26 +140,32 @@ double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& ver
 
 }  // namespace
 
-Simulation::Simulation(const Params& p, const Cell& cell)
+Simulation::Simulation(const Params& p, const Tissue& tissue)
     : p_(p),
-      mesh_(cell.mesh),
+      mesh_(tissue.mesh),
+      cells_(tissue.cells),
+      lamella_(tissue.lamella),
+      contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m, p.lamella_stiffness_N_m,
+                   p.lamella_strength_Pa * tissue.wall_particle_area_m2},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_(plate_law(p)),
       bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
-  s_.fluid.x = cell.fluid_x;
-  s_.fluid.v = Eigen::Matrix3Xd::Zero(3, cell.fluid_x.cols());
-  s_.fluid.m = Eigen::VectorXd::Constant(cell.fluid_x.cols(), cell.fluid_mass_kg);
-  s_.fluid.rho = Eigen::VectorXd::Constant(cell.fluid_x.cols(), p.fluid_density_kg_m3);
-  s_.wall.x = cell.wall_x;
-  s_.wall.v = Eigen::Matrix3Xd::Zero(3, cell.wall_x.cols());
-  s_.wall.mass_kg = cell.wall_mass_kg;
+  s_.fluid.x = tissue.fluid_x;
+  s_.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
+  s_.fluid.m = tissue.fluid_mass_kg;
+  s_.fluid.rho = Eigen::VectorXd::Constant(tissue.fluid_x.cols(), p.fluid_density_kg_m3);
+  s_.wall.x = tissue.wall_x;
+  s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
+  s_.wall.mass_kg = tissue.wall_mass_kg;
+  s_.lamella_intact.assign(lamella_.size(), 1);
+  if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
-  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, p_, cell.wall_mass_kg, cell.wall_x.cols());
+  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
   if (p_.dt_s > wall_spring_dt_limit_s_) {  // known before the first step: bad input, not a blow-up
     std::ostringstream msg;
     msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
@@ -156,7 +173,7 @@ Simulation::Simulation(const Params& p, const Cell& cell)
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
-  s_.reference_diameter_m = equivalent_diameter_m(wall_surface(cell.wall_x, mesh_).volume_m3);
+  s_.reference_diameter_m = equivalent_diameter_m(wall_surface(tissue.wall_x, mesh_).volume_m3);
   compute_rates();
 }
 
@@ -201,14 +218,15 @@ void Simulation::compute_rates() {
     wall_force_.middleCols(begin, end - begin).setZero();
   });
   wall_terms();
+  cell_contact_terms();
   wall_fluid_terms();
   timer_.lap(Phase::WallFluid);
   plate_terms();
   timer_.lap(Phase::Plates);
 }
 
-// The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0.
-// A wall that encloses no volume has collapsed or turned inside out: Eq 6 has no D, so the run stops
+// The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0, D of
+// the volume of all cells (one h for a tissue: model.md §10). A wall that encloses no volume has collapsed or turned inside out: Eq 6 has no D, so the run stops
 // here (a non-finite volume comes from a non-finite position, which check_state names).
 void Simulation::update_geometry() {
   surface_.update(s_.wall.x, mesh_, threads_);
@@ -233,13 +251,13 @@ void Simulation::fluid_terms() {
   timer_.lap(Phase::FluidPairs);
 }
 
-// Eq 11 for every fluid particle, and its share of the density rate (Eq 9).
+// Eq 11 for every fluid particle, through its own cell's wall, and its share of the density rate (Eq 9).
 void Simulation::mass_transfer() {
   dm_dt_.resize(s_.fluid.size());
   const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
-  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    mass_rates(s_.fluid, fluid_.pressure, surface_.area_m2, Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_,
-               fluid_.drho_dt);
+  for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
+    mass_rates(s_.fluid, fluid_.pressure, surface_.cell_area_m2[c], static_cast<int>(cells_.fluid_count(c)),
+               Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_, fluid_.drho_dt);
   });
 }
 
@@ -253,6 +271,13 @@ void Simulation::wall_terms() {
   timer_.lap(Phase::Bending);
 }
 
+// Contact and middle lamella between the walls of different cells (cell_contact.hpp); none for one cell.
+void Simulation::cell_contact_terms() {
+  if (cells_.count() == 1) return;
+  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.lamella_intact, wall_force_);
+  timer_.lap(Phase::CellContact);
+}
+
 // The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 void Simulation::wall_fluid_terms() {
@@ -264,13 +289,22 @@ void Simulation::wall_fluid_terms() {
     wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, threads_, fluid_.force, coupling_on_wall_,
                       lj_scratch_);
   }
-  const double outward = reduce_blocks<double>(
-      threads_, s_.wall.size(),
-      [&](Eigen::Index begin, Eigen::Index end) {
-        return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
-      },
-      std::plus<double>());
-  s_.wall_pressure_Pa = outward / surface_.area_m2;
+  const std::vector<double> outward = sum_by_cell(threads_, cells_.wall, [&](Eigen::Index begin, Eigen::Index end) {
+    return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
+  });
+  cell_wall_pressure_Pa_.resize(outward.size());
+  double outward_sum = 0;
+  for (std::size_t c = 0; c < outward.size(); ++c) {
+    cell_wall_pressure_Pa_[c] = outward[c] / surface_.cell_area_m2[c];
+    outward_sum += outward[c];
+  }
+  s_.wall_pressure_Pa = outward_sum / surface_.area_m2;
+}
+
+std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
+  std::vector<double> mean(static_cast<std::size_t>(cells_.count()));
+  for (int c = 0; c < cells_.count(); ++c) mean[c] = fluid_.pressure.segment(cells_.fluid[c], cells_.fluid_count(c)).mean();
+  return mean;
 }
 
 // Eq 22 during compression; the first contact of the top plate starts the plate strain.
@@ -303,17 +337,22 @@ void Simulation::drift(double dt) {
   if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
 }
 
-// The wall-pressure closure (pressure_closure.hpp): during drying only.
+// The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
 void Simulation::apply_pressure_closure() {
   const Eigen::VectorXd& P = fluid_.pressure;
-  const double pressure_sum = reduce_blocks<double>(
-      threads_, P.size(), [&](Eigen::Index begin, Eigen::Index end) { return P.segment(begin, end - begin).sum(); },
-      std::plus<double>());
-  const double factor = pressure_closure_factor(s_.wall_pressure_Pa, pressure_sum / static_cast<double>(P.size()),
-                                                p_.dt_s, p_.pressure_closure_time_s);
-  if (factor != 1.0)
-    for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-      scale(factor, begin, end, s_.fluid.m);
+  const std::vector<double> pressure_sum = sum_by_cell(threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) {
+    return P.segment(begin, end - begin).sum();
+  });
+  std::vector<double> factor(pressure_sum.size());
+  bool any = false;
+  for (int c = 0; c < cells_.count(); ++c) {
+    factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], pressure_sum[c] / static_cast<double>(cells_.fluid_count(c)),
+                                        p_.dt_s, p_.pressure_closure_time_s);
+    any = any || factor[c] != 1.0;
+  }
+  if (any)
+    for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
+      scale(factor[c], begin, end, s_.fluid.m);
     });
 }
 
@@ -397,14 +436,31 @@ void Simulation::check_time_step() const {
 }
 
 void Simulation::check_containment() const {
-  const int outside = first_particle_outside(s_.fluid.x, s_.wall.x, mesh_);
-  if (outside >= 0) {
-    std::ostringstream msg;
-    const Eigen::Vector3d x = s_.fluid.x.col(outside);
-    msg << where() << ": fluid particle " << outside << " is outside the cell wall at (" << x.x() * 1e6 << ", "
-        << x.y() * 1e6 << ", " << x.z() * 1e6 << ") um";
-    throw NumericalFailure(msg.str());
+  const auto at = [](const Eigen::Vector3d& x) {
+    std::ostringstream s;
+    s << "(" << x.x() * 1e6 << ", " << x.y() * 1e6 << ", " << x.z() * 1e6 << ") um";
+    return s.str();
+  };
+  const bool tissue = cells_.count() > 1;
+  std::vector<ClosedSurface> walls;
+  for (int c = 0; c < cells_.count(); ++c) {
+    walls.emplace_back(s_.wall.x, mesh_, c);
+    const int outside = first_particle_outside(s_.fluid.x, cells_.fluid[c], cells_.fluid[c + 1], walls.back());
+    if (outside >= 0)
+      throw NumericalFailure(where() + ": fluid particle " + std::to_string(outside) + " is outside " +
+                             (tissue ? "the wall of its cell " + std::to_string(c) : std::string("the cell wall")) +
+                             " at " + at(s_.fluid.x.col(outside)));
   }
+  // Walls of different cells must not pass through each other (model.md §10).
+  for (int a = 0; a < cells_.count(); ++a)
+    for (int b = 0; b < cells_.count(); ++b) {
+      if (a == b || !walls[a].box_overlaps(walls[b])) continue;
+      for (Eigen::Index k = cells_.wall[a]; k < cells_.wall[a + 1]; ++k)
+        if (walls[b].contains(s_.wall.x.col(k)))
+          throw NumericalFailure(where() + ": wall particle " + std::to_string(k) + " of cell " + std::to_string(a) +
+                                 " is inside cell " + std::to_string(b) + " at " + at(s_.wall.x.col(k)) +
+                                 " (the walls interpenetrate)");
+    }
 }
 
 // model.md §6: L_p takes its compression value; the bottom plate touches the lowest wall particle
@@ -423,6 +479,7 @@ void Simulation::start_compression() {
   plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
   plates.start_time_s = s_.time_s;
   plates.contact_height_m = cell_height_m(s_.wall.x);
+  plates.footprint_m2 = convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
@@ -430,10 +487,13 @@ void Simulation::start_compression() {
 }
 
 void Simulation::restore(const State& saved) {
-  if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size())
+  if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size() ||
+      saved.lamella_intact.size() != s_.lamella_intact.size())
     throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
-                     std::to_string(saved.wall.size()) + " wall particles; the case builds " +
-                     std::to_string(s_.fluid.size()) + " and " + std::to_string(s_.wall.size()));
+                     std::to_string(saved.wall.size()) + " wall particles and " +
+                     std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
+                     std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
+                     std::to_string(s_.lamella_intact.size()));
   s_ = saved;
   neighbours_.invalidate();
   compute_rates();
@@ -441,7 +501,7 @@ void Simulation::restore(const State& saved) {
 
 Record Simulation::record() const {
   const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, plate_law_, s_.plates);
-  return measure(s_, mesh_, surface_, p_, eos(), load);
+  return measure(s_, mesh_, cells_, surface_, p_, eos(), load);
 }
 
 double Simulation::nominal_strain() const {

@@ -1,7 +1,8 @@
 #pragma once
-// One cell run: the state, and the step that advances it (model.md §2-7). The step reads like
-// the model: geometry -> neighbours -> density and mass transfer -> fluid forces -> wall forces
-// -> wall-fluid forces -> plates -> integrate -> checks.
+// One run of a tissue (one cell, or several: model.md §10): the state, and the step that advances it
+// (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
+// -> fluid forces -> wall forces -> forces between cells -> wall-fluid forces -> plates -> integrate
+// -> checks.
 #include <string>
 
 #include "bending.hpp"
@@ -15,9 +16,10 @@
 #include "phase_timer.hpp"
 #include "plates.hpp"
 #include "pressure_coupling.hpp"
-#include "cell.hpp"
+#include "cell_contact.hpp"
 #include "state.hpp"
 #include "surface.hpp"
+#include "tissue.hpp"
 #include "wall_bonds.hpp"
 #include "wall_fluid.hpp"
 #include "wall_mesh.hpp"
@@ -26,7 +28,7 @@ namespace cellsim {
 
 class Simulation {
  public:
-  Simulation(const Params& p, const Cell& cell);
+  Simulation(const Params& p, const Tissue& tissue);
 
   void step();                  // one kick-drift-kick step of dt
   void start_compression();     // switches L_p and places the plates (model.md §6)
@@ -46,7 +48,8 @@ class Simulation {
   // Threads for the fluid pair loop (threads.hpp); 1 unless set. Throws InputError if impossible.
   void set_threads(int threads);
 
-  // Checks for a record: every fluid particle inside the wall. Throws NumericalFailure.
+  // Checks for a record: every fluid particle inside its own cell's wall, and no wall particle inside
+  // another cell. Throws NumericalFailure.
   void check_containment() const;
 
   // For the relaxation at rest (settle.hpp): forces at the current positions, and the restart of
@@ -57,12 +60,21 @@ class Simulation {
   double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
   void start_at_rest();
 
+  // Per cell: the wall pressure (outward push along the normals / the cell's wall area) and the mean
+  // fluid pressure, at the last force evaluation.
+  const std::vector<double>& cell_wall_pressure_Pa() const { return cell_wall_pressure_Pa_; }
+  std::vector<double> cell_mean_fluid_pressure_Pa() const;
+  const CellRanges& cells() const { return cells_; }
+  const std::vector<LamellaBond>& lamella() const { return lamella_; }
+  const WallSurface& surface() const { return surface_; }
+
  private:
   void compute_rates();
   void update_geometry();
   void fluid_terms();
   void mass_transfer();
   void wall_terms();
+  void cell_contact_terms();
   void wall_fluid_terms();
   void plate_terms();
   void kick(double half_dt);
@@ -76,6 +88,10 @@ class Simulation {
 
   Params p_;
   WallMesh mesh_;
+  CellRanges cells_;
+  std::vector<LamellaBond> lamella_;
+  CellContactLaw contact_law_;
+  std::vector<double> cell_wall_pressure_Pa_;
   State s_;
   Bending bending_;
   NeighbourLists neighbours_;

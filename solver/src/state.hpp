@@ -1,6 +1,8 @@
 #pragma once
-// The evolving state of one run: particles as structure-of-arrays, indices stable for the whole run.
+// The evolving state of one run: particles as structure-of-arrays, indices stable for the whole run
+// (a tissue's cells one after another: tissue.hpp).
 #include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
@@ -33,6 +35,7 @@ struct Plates {
   double force_bottom_N = 0;      // force of the wall on the bottom plate, downward positive
   int contacts = 0;               // wall particles within r_pw of either plate
   double contact_height_m = 0;    // H_c: cell height when compression starts
+  double footprint_m2 = 0;        // area of the wall's outline seen from above when compression starts
   double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
 };
 
@@ -40,6 +43,7 @@ struct State {
   FluidParticles fluid;
   WallParticles wall;
   Plates plates;
+  std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it breaks (model.md §10)
   Stage stage = Stage::Drying;
   std::int64_t step = 0;          // steps done in the whole run
   std::int64_t stage_step = 0;    // steps done in the current stage

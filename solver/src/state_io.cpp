@@ -18,7 +18,7 @@ constexpr PlateField kPlateFields[] = {
     {"plate_bottom_z_m", &Plates::bottom_z_m},       {"plate_top_z_m", &Plates::top_z_m},
     {"plate_top_start_z_m", &Plates::top_start_z_m}, {"plate_start_time_s", &Plates::start_time_s},
     {"plate_force_top_N", &Plates::force_top_N},     {"plate_force_bottom_N", &Plates::force_bottom_N},
-    {"plate_contact_height_m", &Plates::contact_height_m},
+    {"plate_contact_height_m", &Plates::contact_height_m}, {"plate_footprint_m2", &Plates::footprint_m2},
     {"plate_first_contact_top_z_m", &Plates::first_contact_top_z_m},
 };
 
@@ -54,6 +54,9 @@ void write_state(hid_t parent, const State& s) {
   h5::write_points(g.id(), "fluid_velocities", s.fluid.v);
   h5::write_values(g.id(), "fluid_mass", s.fluid.m);
   h5::write_values(g.id(), "fluid_density", s.fluid.rho);
+  if (!s.lamella_intact.empty())  // a tissue's bonds: which still hold (1) and which broke (0)
+    h5::write(g.id(), "lamella_intact", std::vector<std::int32_t>(s.lamella_intact.begin(), s.lamella_intact.end()),
+              {s.lamella_intact.size()});
 }
 
 SavedRun read_saved_run(const std::string& path) {
@@ -91,6 +94,10 @@ SavedRun read_saved_run(const std::string& path) {
     s.fluid.v = h5::read_points(g.id(), "fluid_velocities");
     s.fluid.m = h5::read_values(g.id(), "fluid_mass");
     s.fluid.rho = h5::read_values(g.id(), "fluid_density");
+    if (h5::exists(g.id(), "lamella_intact")) {
+      const std::vector<std::int32_t> intact = h5::read_ints(g.id(), "lamella_intact");
+      s.lamella_intact.assign(intact.begin(), intact.end());
+    }
 
     h5::Handle ts = h5::open_group(file.id(), "timeseries");
     for (const auto& q : quantities()) {
@@ -98,6 +105,15 @@ SavedRun read_saved_run(const std::string& path) {
       if (run.records.empty()) run.records.resize(column.size());
       if (column.size() != run.records.size()) throw std::runtime_error("time series of unequal length");
       for (std::size_t r = 0; r < column.size(); ++r) run.records[r].*q.member = column[r];
+    }
+    h5::Handle cells = h5::open_group(file.id(), "cells");
+    for (const auto& q : cell_quantities()) {
+      std::vector<hsize_t> dims;
+      const auto table = h5::read_doubles(cells.id(), q.name, &dims);
+      if (dims.size() != 2 || dims[0] != run.records.size()) throw std::runtime_error("per-cell series of unequal length");
+      for (std::size_t r = 0; r < run.records.size(); ++r)
+        (run.records[r].*q.member).assign(table.begin() + static_cast<std::ptrdiff_t>(r * dims[1]),
+                                          table.begin() + static_cast<std::ptrdiff_t>((r + 1) * dims[1]));
     }
   } catch (const InputError&) {
     throw;

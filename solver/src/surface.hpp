@@ -22,8 +22,9 @@ void compute_triangle_normals(const Eigen::Matrix3Xd& x, const WallMesh& mesh, T
 struct WallSurface {
   TriangleNormals triangles;
   Eigen::Matrix3Xd vertex_normal;  // sum of the adjacent triangles' area normals (outward)
-  double area_m2 = 0;              // sum of the triangles' areas
+  double area_m2 = 0;              // sum of the triangles' areas (every cell's)
   double volume_m3 = 0;            // sum of the signed tetrahedra (origin, triangle): > 0 when closed and outward
+  std::vector<double> cell_area_m2, cell_volume_m3;  // the same for each cell's closed surface
 
   // threads: as `cellsim run --threads` (owned_spans.hpp).
   void update(const Eigen::Matrix3Xd& x, const WallMesh& mesh, int threads = 1);
@@ -31,7 +32,7 @@ struct WallSurface {
   Eigen::VectorXd vertex_areas(const WallMesh& mesh) const;
 
  private:
-  std::vector<double> six_volume_;  // per thread, added in order
+  std::vector<double> six_volume_;  // per thread and cell (thread t, cell c at t * cells + c), added in thread order
   OwnedSpans spans_;                // each thread's particles and the triangles at them (owned_spans.hpp)
 };
 

@@ -57,6 +57,7 @@ WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::arr
     mesh.hinges.push_back({a, b, near.first, twin->second.first, near.second, twin->second.second});
   }
   mesh.triangles = std::move(triangles);
+  mesh.cell_triangles = {0, static_cast<int>(mesh.triangles.size())};
   return mesh;
 }
 

@@ -20,6 +20,9 @@ struct WallMesh {
   std::vector<std::array<int, 2>> bonds;      // i < j, each edge once
   std::vector<double> rest_length_m;          // l0 per bond (initial edge length)
   std::vector<Hinge> hinges;                  // one per interior edge (all edges of a closed surface)
+  // One closed surface per cell: cell c's triangles are [cell_triangles[c], cell_triangles[c + 1]).
+  std::vector<int> cell_triangles;
+  int cells() const { return static_cast<int>(cell_triangles.size()) - 1; }
 };
 
 // Builds bonds and hinges from outward triangles; throws InputError if the surface is not closed.

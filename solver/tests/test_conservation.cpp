@@ -6,7 +6,7 @@
 #include <random>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "fluid_pairs.hpp"
 #include "simulation.hpp"
 #include "small_cell.hpp"
@@ -81,7 +81,7 @@ TEST(Conservation, ViscosityAloneDissipatesKineticEnergy) {
 TEST(Conservation, WholeCellConservesMomentumWithoutMassTransfer) {
   Params p = cellsim::testing::small_cell_case(
       {{"drying", {{"Lp_m_per_s_Pa", 0}, {"pressure_closure_time_us", 0}, {"dryness", 0.5}}}});
-  const Cell cell = build_cell(p);
+  const Tissue cell = build_tissue(p);
   Simulation sim(p, cell);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> speed(-0.3, 0.3);

@@ -32,3 +32,22 @@ TEST(Containment, FindsTheParticleOutsideTheWall) {
   fluid.col(3) << 35e-6, 35e-6, 35e-6;  // a corner of the bounding box, far outside the sphere
   EXPECT_EQ(first_particle_outside(fluid, wall, mesh), 3);
 }
+
+// A ray through a wall vertex must count exactly one of the triangles around it (the tie rule), also
+// where the compiler fuses the edge function's products (a fused multiply-add leaves a rounding error
+// where the two products are equal, and the tie rule did not apply).
+TEST(Containment, ARayThroughAWallVertexCountsItOnce) {
+  const Eigen::Matrix3Xd wall = fibonacci_sphere(400, 50e-6);
+  const WallMesh mesh = build_wall_mesh(wall, convex_hull_triangles(wall));
+  const ClosedSurface surface(wall, mesh, 0);
+  int tested = 0;
+  for (Eigen::Index v = 0; v < wall.cols(); ++v) {
+    if (std::abs(wall(2, v)) < 10e-6) continue;  // near the equator the ray grazes the wall
+    const Eigen::Vector3d below_in(wall(0, v), wall(1, v), 0.5 * wall(2, v));  // inside, straight under or over v
+    const Eigen::Vector3d below_out(wall(0, v), wall(1, v), -60e-6);           // under the whole cell
+    EXPECT_TRUE(surface.contains(below_in)) << "vertex " << v;
+    EXPECT_FALSE(surface.contains(below_out)) << "vertex " << v;
+    ++tested;
+  }
+  EXPECT_GT(tested, 300);
+}

@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "simulation.hpp"
 #include "small_cell.hpp"
 
@@ -22,7 +22,7 @@ Params small_case() { return cellsim::testing::small_cell_case(); }
 
 TEST(Measures, SmoothingLengthFollowsTheEquivalentDiameterEq6) {
   Params p = small_case();
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   EXPECT_DOUBLE_EQ(sim.state().smoothing_length_m, *p.h0_m);  // h = h0 at the start
   // Scale the whole cell by 1.1: D grows by 1.1, so must h.
   sim.mutable_state().wall.x *= 1.1;
@@ -38,7 +38,7 @@ TEST(Measures, ContactAreaForceStressesAndStrainUnderThePlates) {
   Params p = small_case();
   p.plate_length_m = 16e-6;  // a footprint narrower than the 40 um cell: particles beside it do not count
   p.plate_width_m = 16e-6;
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   sim.start_compression();
   State& s = sim.mutable_state();
   s.plates.top_z_m -= p.plate_gap_m + 4e-6;  // the top plate 4 um into the cell's range
@@ -92,7 +92,7 @@ TEST(Measures, ContactAreaForceStressesAndStrainUnderThePlates) {
 // and the plate's reaction it adds up to the total force on those particles.
 TEST(Measures, TopPlateLoadSplitsIntoFluidAndWallParts) {
   Params p = small_case();
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   sim.start_compression();
   State& s = sim.mutable_state();
   s.plates.top_z_m -= p.plate_gap_m + 4e-6;
@@ -121,7 +121,7 @@ TEST(Measures, TopPlateLoadSplitsIntoFluidAndWallParts) {
 
 TEST(Measures, BeforeCompressionPlateQuantitiesAreNaN) {
   Params p = small_case();
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   const Record r = sim.record();
   EXPECT_TRUE(std::isnan(r.plate_force_top_N));
   EXPECT_TRUE(std::isnan(r.contact_area_m2));

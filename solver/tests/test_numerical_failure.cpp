@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "cli_helpers.hpp"
 #include "errors.hpp"
 #include "simulation.hpp"
@@ -18,7 +18,7 @@ namespace {
 
 Simulation small_simulation() {
   Params p = cellsim::testing::small_cell_case();
-  return Simulation(p, build_cell(p));
+  return Simulation(p, build_tissue(p));
 }
 
 // The message of the NumericalFailure the next step throws ("" if none).
@@ -69,7 +69,7 @@ TEST(NumericalFailure, TheSoundSpeedLimitNamesTheFastestParticle) {
 TEST(NumericalFailure, TheViscousLimitStopsAToViscousFluid) {
   // 0.125 h^2 rho0 / mu < 0.5 ns for mu above ~0.8 Pa s at h = 1.8 um.
   Params p = cellsim::testing::small_cell_case({{"fluid", {{"viscosity_Pa_s", 50.0}}}});
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   const std::string message = failure_of_next_step(sim);
   EXPECT_NE(message.find("viscous limit"), std::string::npos) << message;
 }

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "simulation.hpp"
 #include "version.hpp"
 
@@ -47,7 +47,7 @@ double reference_loop(const std::vector<double>& r2, const std::vector<int>& ind
 
 TEST(Performance, StepIsNotGrosslySlowerThanReferenceLoop) {
   Params p = validate_case(nlohmann::json::object());  // the paper's default cell
-  const Cell cell = build_cell(p);
+  const Tissue cell = build_tissue(p);
   Simulation sim(p, cell);
   for (int n = 0; n < 20; ++n) sim.step();  // warm caches and build the neighbour lists
 

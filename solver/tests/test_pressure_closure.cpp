@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "pressure_closure.hpp"
 #include "simulation.hpp"
 #include "small_cell.hpp"
@@ -33,7 +33,7 @@ TEST(PressureClosure, ActsInDryingAndIsOffInCompression) {
   // With L_p = 0 in both stages, Eq 11 moves no mass, so any change of a fluid mass is the closure's.
   Params p = cellsim::testing::small_cell_case();
   p.drying_Lp_m_per_s_Pa = p.compression_Lp_m_per_s_Pa = 0;
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   Eigen::VectorXd before = sim.state().fluid.m;
   for (int n = 0; n < 5; ++n) sim.step();
   EXPECT_GT((sim.state().fluid.m - before).cwiseAbs().maxCoeff(), 0.0) << "the closure should act in drying";

@@ -8,6 +8,7 @@
 
 #include "case_file.hpp"
 #include "cell.hpp"
+#include "tissue.hpp"
 #include "pressure_coupling.hpp"
 #include "settle.hpp"
 #include "simulation.hpp"
@@ -124,7 +125,7 @@ TEST(PressureCoupling, APressurisedCellAtRestHoldsItsPressure) {
   // No mass transfer, fresh: after the relaxation at rest, 4000 steps (2 us) keep the turgor, the
   // volume, every particle inside the wall, and the fluid nearly still.
   Params p = pressure_cell({{"drying", {{"Lp_m_per_s_Pa", 0}, {"pressure_closure_time_us", 0}}}});
-  Simulation sim(p, build_cell(p));
+  Simulation sim(p, build_tissue(p));
   const SettleReport settled = settle(sim, p.settle_max_iterations, p.settle_tolerance);
   ASSERT_TRUE(settled.converged);
   const Record start = sim.record();

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "case_file.hpp"
-#include "cell.hpp"
+#include "tissue.hpp"
 #include "settle.hpp"
 #include "simulation.hpp"
 
@@ -34,7 +34,7 @@ double fastest_over(Simulation& sim, int steps) {
 
 TEST(Settle, RelaxesTheFreshCellToRestAtItsTurgorWithTheWallCarryingTheFluidPressure) {
   Params p = small_case();
-  const Cell cell = build_cell(p);  // fills in the derived parameters (h0, r0)
+  const Tissue cell = build_tissue(p);  // fills in the derived parameters (h0, r0)
   Simulation sim(p, cell);
   const SettleReport r = settle(sim, p.settle_max_iterations, p.settle_tolerance);
   EXPECT_TRUE(r.converged) << r.iterations << " iterations, residual " << r.residual;
@@ -53,7 +53,7 @@ TEST(Settle, RelaxesTheFreshCellToRestAtItsTurgorWithTheWallCarryingTheFluidPres
 
 TEST(Settle, DynamicsStartedFromRestStayCalmWhereTheCellAsBuiltShocks) {
   Params p = small_case();
-  const Cell cell = build_cell(p);
+  const Tissue cell = build_tissue(p);
   Simulation settled(p, cell);
   settle(settled, p.settle_max_iterations, p.settle_tolerance);
   Simulation as_built(p, cell);

@@ -7,6 +7,7 @@
 
 #include "bending.hpp"
 #include "cell.hpp"
+#include "tissue.hpp"
 #include "fluid_pairs.hpp"
 #include "neighbours.hpp"
 #include "simulation.hpp"
@@ -131,7 +132,7 @@ TEST(Threads, ReducedBlocksFoldInBlockOrder) {
 TEST(Threads, AStepIsReproducibleForACountAndAgreesWithOneThreadToRoundOff) {
   if (!built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
   Params p = cellsim::testing::small_cell_case();
-  const Cell cell = build_cell(p);
+  const Tissue cell = build_tissue(p);
   const auto run = [&](int threads) {
     Simulation sim(p, cell);
     sim.set_threads(threads);

@@ -1,0 +1,239 @@
+// A tissue of cells (model.md §10): its geometry, the walls between cells, and the separation of the
+// cells' fluids.
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "cell.hpp"
+#include "cell_contact.hpp"
+#include "containment.hpp"
+#include "errors.hpp"
+#include "simulation.hpp"
+#include "small_cell.hpp"
+#include "tissue.hpp"
+
+using namespace cellsim;
+using cellsim::testing::small_cell_case;
+
+namespace {
+
+// Tissues of the small cell (40 um), with the wall gap scaled as the cell is from the paper's (6 um at 150 um).
+Params tissue_case(int nx, int ny, int nz, const nlohmann::json& extra = nlohmann::json::object()) {
+  nlohmann::json doc = {{"tissue", {{"cells_x", nx}, {"cells_y", ny}, {"cells_z", nz}, {"wall_gap_um", 1.6}}}};
+  doc.merge_patch(extra);
+  return small_cell_case(doc);
+}
+
+// The smallest distance between wall particles of different cells.
+double closest_walls(const Tissue& t) {
+  double closest = INFINITY;
+  const std::vector<int> cell = t.cells.cell_of_wall();
+  for (Eigen::Index k = 0; k < t.wall_x.cols(); ++k)
+    for (Eigen::Index l = k + 1; l < t.wall_x.cols(); ++l)
+      if (cell[k] != cell[l]) closest = std::min(closest, (t.wall_x.col(k) - t.wall_x.col(l)).norm());
+  return closest;
+}
+
+}  // namespace
+
+TEST(Tissue, OneCellIsThePapersCell) {
+  Params p = small_cell_case();
+  Params q = p;
+  const Cell cell = build_cell(p);
+  const Tissue tissue = build_tissue(q);
+  ASSERT_EQ(tissue.cells.count(), 1);
+  EXPECT_EQ(tissue.wall_x, cell.wall_x);
+  EXPECT_EQ(tissue.fluid_x, cell.fluid_x);
+  EXPECT_EQ(tissue.mesh.triangles, cell.mesh.triangles);
+  EXPECT_EQ(tissue.mesh.rest_length_m, cell.mesh.rest_length_m);
+  EXPECT_TRUE((tissue.fluid_mass_kg.array() == cell.fluid_mass_kg).all());
+  EXPECT_EQ(tissue.wall_mass_kg, cell.wall_mass_kg);
+  EXPECT_TRUE(tissue.lamella.empty());
+}
+
+TEST(Tissue, CubicCellsHaveFlatFacesOneWallGapApartAndKeepTheirFluidInside) {
+  Params p = tissue_case(2, 2, 2);
+  const Tissue t = build_tissue(p);
+  ASSERT_EQ(t.cells.count(), 8);
+  const double gap = *p.wall_gap_m;
+  // Facing walls are one gap apart (their particles do not line up: no closer, and not much farther).
+  const double closest = closest_walls(t);
+  EXPECT_GE(closest, gap * (1 - 1e-9));
+  EXPECT_LT(closest, 1.2 * gap);
+  const double sphere_volume = M_PI / 6 * std::pow(p.diameter_m, 3);
+  for (int c = 0; c < 8; ++c) {
+    const ClosedSurface wall(t.wall_x, t.mesh, c);
+    EXPECT_EQ(first_particle_outside(t.fluid_x, t.cells.fluid[c], t.cells.fluid[c + 1], wall), -1) << c;
+    for (int other = 0; other < 8; ++other) {
+      if (other == c) continue;
+      for (Eigen::Index i = t.cells.fluid[other]; i < t.cells.fluid[other + 1]; ++i)
+        ASSERT_FALSE(wall.contains(t.fluid_x.col(i))) << "fluid " << i << " of cell " << other << " in cell " << c;
+      for (Eigen::Index k = t.cells.wall[other]; k < t.cells.wall[other + 1]; ++k)
+        ASSERT_FALSE(wall.contains(t.wall_x.col(k))) << "wall " << k << " of cell " << other << " in cell " << c;
+    }
+    // Three faces cut each corner cell: less than a sphere, far more than the cube between the faces.
+    const double volume = wall_surface(t.wall_x, t.mesh).cell_volume_m3[c];
+    EXPECT_LT(volume, 0.97 * sphere_volume);
+    EXPECT_GT(volume, 0.8 * sphere_volume);
+  }
+  // Lamella bonds: between face neighbours only (12 faces in a 2 x 2 x 2 cube), each within 1.5 gaps.
+  const std::vector<int> cell = t.cells.cell_of_wall();
+  std::set<std::pair<int, int>> faces;
+  for (const auto& b : t.lamella) {
+    ASSERT_LT(b.a, b.b);
+    ASSERT_NE(cell[b.a], cell[b.b]);
+    EXPECT_GE(b.length_m, gap * (1 - 1e-9));
+    EXPECT_LE(b.length_m, 1.5 * gap);
+    faces.insert({cell[b.a], cell[b.b]});
+  }
+  EXPECT_EQ(faces.size(), 12u);
+}
+
+TEST(Tissue, ClosePackingGivesEachCellMoreFacesThanCubic) {
+  const auto neighbours_of_cell = [](Params p) {
+    const Tissue t = build_tissue(p);
+    const std::vector<int> cell = t.cells.cell_of_wall();
+    std::vector<std::set<int>> n(static_cast<std::size_t>(t.cells.count()));
+    for (const auto& b : t.lamella) n[cell[b.a]].insert(cell[b.b]), n[cell[b.b]].insert(cell[b.a]);
+    std::size_t most = 0;
+    for (const auto& s : n) most = std::max(most, s.size());
+    return most;
+  };
+  EXPECT_EQ(neighbours_of_cell(tissue_case(3, 3, 3)), 6u);  // the centre cell of a cube
+  EXPECT_GE(neighbours_of_cell(tissue_case(3, 3, 3, {{"tissue", {{"packing", "close"}}}})), 9u);
+}
+
+TEST(Tissue, SpreadDiametersAreSeededAndReproducible) {
+  const nlohmann::json spread = {{"tissue", {{"diameter_spread", 0.1}, {"seed", 7}}}};
+  Params a = tissue_case(2, 2, 1, spread), b = tissue_case(2, 2, 1, spread),
+         c = tissue_case(2, 2, 1, {{"tissue", {{"diameter_spread", 0.1}, {"seed", 8}}}});
+  const Tissue ta = build_tissue(a), tb = build_tissue(b), tc = build_tissue(c);
+  EXPECT_EQ(ta.wall_x, tb.wall_x);
+  EXPECT_EQ(ta.fluid_x, tb.fluid_x);
+  EXPECT_NE(ta.cells.wall, tc.cells.wall);  // other diameters, other particle counts
+  EXPECT_GE(closest_walls(ta), *a.wall_gap_m * (1 - 1e-9));
+}
+
+TEST(Tissue, CellsThatOverlapTooMuchAreRefusedNamingTheKey) {
+  // Centres 24 um apart, 14 um gaps: each face 24/2 - 14/2 = 5 um from the centre of a 20 um cell.
+  Params p = tissue_case(2, 1, 1, {{"tissue", {{"centre_distance_over_diameter", 0.6}, {"wall_gap_um", 14}}}});
+  try {
+    build_tissue(p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tissue.centre_distance_over_diameter"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Tissue, NeighbourListsKeepEachFluidInItsOwnCell) {
+  Params p = tissue_case(2, 1, 1);
+  Simulation sim(p, build_tissue(p));
+  const CellRanges& cells = sim.cells();
+  const std::vector<int> fluid_cell = cells.cell_of_fluid(), wall_cell = cells.cell_of_wall();
+  const NeighbourLists& lists = sim.neighbours();
+  const auto& ff = lists.fluid_fluid();
+  std::size_t within = 0;
+  for (int i = 0; i < ff.rows(); ++i)
+    for (int q = ff.offset[i]; q < ff.offset[i + 1]; ++q) {
+      const int j = ff.index[q];
+      if (j == static_cast<int>(fluid_cell.size())) continue;  // padding
+      ASSERT_EQ(fluid_cell[i], fluid_cell[j]);
+      ++within;
+    }
+  EXPECT_GT(within, 0u);
+  const auto& fw = lists.fluid_wall();
+  for (int i = 0; i < fw.rows(); ++i)
+    for (int q = fw.offset[i]; q < fw.offset[i + 1]; ++q) ASSERT_EQ(fluid_cell[i], wall_cell[fw.index[q]]);
+  const auto& ww = lists.wall_wall();
+  ASSERT_GT(ww.pairs, 0u);  // the two cells face each other
+  for (int k = 0; k < ww.rows(); ++k)
+    for (int q = ww.offset[k]; q < ww.offset[k + 1]; ++q) ASSERT_NE(wall_cell[k], wall_cell[ww.index[q]]);
+}
+
+// Two cells touch: whatever the fluid of one does, the forces on the other's fluid do not change.
+TEST(Tissue, AFluidParticleNeverFeelsAnotherCellsFluid) {
+  Params p = tissue_case(2, 1, 1);
+  Simulation sim(p, build_tissue(p));
+  const CellRanges& cells = sim.cells();
+  const Eigen::Index n0 = cells.fluid_count(0);
+  const Eigen::Matrix3Xd before = sim.fluid_force().leftCols(n0);
+  const Eigen::Matrix3Xd before_1 = sim.fluid_force().rightCols(cells.fluid_count(1));
+  State& s = sim.mutable_state();
+  // Cell 1 (at +x) has its fluid crowd 2 um toward cell 0, move fast and grow denser.
+  for (Eigen::Index i = cells.fluid[1]; i < cells.fluid[2]; ++i) {
+    s.fluid.x(0, i) -= 2e-6;
+    s.fluid.v.col(i) << -2.0, 1.0, 0.5;
+    s.fluid.rho[i] *= 1.01;
+  }
+  sim.refresh_rates();
+  EXPECT_EQ(sim.fluid_force().leftCols(n0), before);
+  EXPECT_GT((sim.fluid_force().rightCols(cells.fluid_count(1)) - before_1).norm(), 0.0);  // cell 1 did change
+}
+
+TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
+  CellContactLaw law{6e-6, 1e3, 2e3, 5e-3};
+  Eigen::Matrix3Xd x(3, 4);
+  x << 0, 5e-6, 0, 0,  //
+      0, 0, 20e-6, 27e-6,  //
+      0, 0, 0, 1e-6;
+  // Particles 0 (cell 0) and 1 (cell 1) are 5 um apart (inside the 6 um gap): no bond, contact only.
+  PairList wall_wall;
+  wall_wall.offset = {0, 1, 1, 1, 1};
+  wall_wall.index = {1};
+  // Particles 2 and 3: bonded at 6.5 um, now 7.07 um apart: a lamella in tension.
+  const std::vector<LamellaBond> bonds = {{2, 3, 6.5e-6}};
+  std::vector<char> intact = {1};
+  Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 4);
+  EXPECT_EQ(add_cell_contact_forces(x, wall_wall, bonds, law, intact, force), 0);
+  EXPECT_NEAR(force(0, 0), -1e3 * 1e-6, 1e-15);  // k_c (g - r), pushing 0 away from 1 (along -x)
+  EXPECT_NEAR(force.col(0).norm(), 1e-3, 1e-15);
+  const double r = (x.col(3) - x.col(2)).norm();
+  const Eigen::Vector3d pull = 2e3 * (r - 6.5e-6) / r * (x.col(3) - x.col(2));  // on 2, toward 3
+  EXPECT_NEAR((force.col(2) - pull).norm(), 0.0, 1e-15);
+  EXPECT_NEAR(force.rowwise().sum().norm(), 0.0, 1e-18);  // Newton's third law
+  EXPECT_EQ(force.col(1), -force.col(0));
+  EXPECT_EQ(force.col(3), -force.col(2));
+
+  // The bond breaks, for good, when its tension passes the break force (here 2.1 mN): at 1.04 um of
+  // stretch (2.08 mN) it holds, at 1.06 um (2.12 mN) it breaks.
+  law.lamella_break_force_N = 2.1e-3;
+  x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.54e-6, 0);  // tension 2e3 x 1.04 um = 2.08 mN
+  force.setZero();
+  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 0);
+  EXPECT_EQ(intact[0], 1);
+  EXPECT_NEAR(force(1, 2), 2.08e-3, 1e-12);
+  x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.56e-6, 0);  // 2.12 mN
+  force.setZero();
+  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 1);
+  EXPECT_EQ(intact[0], 0);
+  EXPECT_EQ(force.norm(), 0.0);
+  x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.0e-6, 0);  // back within strength: stays broken
+  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 0);
+  EXPECT_EQ(force.norm(), 0.0);
+}
+
+TEST(Tissue, InterpenetratingWallsStopTheRunNamingBothCells) {
+  Params p = tissue_case(2, 1, 1);
+  Simulation sim(p, build_tissue(p));
+  EXPECT_NO_THROW(sim.check_containment());
+  const CellRanges& cells = sim.cells();
+  State& s = sim.mutable_state();
+  // The wall particle of cell 1 nearest cell 0's centre, pushed 10 um toward it: through the 6 um gap
+  // and 4 um into cell 0.
+  const Eigen::Vector3d centre0 = s.fluid.x.leftCols(cells.fluid_count(0)).rowwise().mean();
+  Eigen::Index nearest = cells.wall[1];
+  for (Eigen::Index k = cells.wall[1]; k < cells.wall[2]; ++k)
+    if ((s.wall.x.col(k) - centre0).norm() < (s.wall.x.col(nearest) - centre0).norm()) nearest = k;
+  s.wall.x.col(nearest) += 10e-6 * (centre0 - s.wall.x.col(nearest)).normalized();
+  try {
+    sim.check_containment();
+    FAIL() << "no failure";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    // Either wall may be found in the other first: the moved particle drags its triangles along.
+    EXPECT_TRUE(what.find(" of cell 1 is inside cell 0") != std::string::npos ||
+                what.find(" of cell 0 is inside cell 1") != std::string::npos)
+        << what;
+    EXPECT_NE(what.find("the walls interpenetrate"), std::string::npos) << what;
+  }
+}
