@@ -16,7 +16,7 @@ struct CellContactLaw {
   double gap_m = 0;
   double contact_stiffness_N_m = 0;
   double lamella_stiffness_N_m = 0;
-  double lamella_break_force_N = 0;  // strength x the area a wall particle owns
+  double lamella_break_force_N = 0;
 };
 
 // Adds the contact and lamella forces to wall_force (each pair's two forces are equal and opposite).

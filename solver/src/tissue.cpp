@@ -163,7 +163,6 @@ Tissue build_tissue(Params& p) {
   t.wall_mass_kg = model.wall_mass_kg;
   t.fluid_spacing_m = model.fluid_spacing_m;
   t.centre_m = centres;
-  t.wall_particle_area_m2 = 4.0 * M_PI * radius * radius / static_cast<double>(p.n_wall);
   std::vector<Eigen::Matrix3Xd> walls, fluids;
   std::vector<double> fluid_masses;
   for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
