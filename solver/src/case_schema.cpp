@@ -81,8 +81,9 @@ std::vector<ParamSpec> build_specs() {
            "model.md §10"),
       real("tissue.lamella_stiffness_N_m", "N/m", 1.0, &P::lamella_stiffness_N_m, 1e3, 0, true, 1e9, true,
            "middle-lamella bond between facing wall particles, a spring at its initial length", "model.md §10"),
-      real("tissue.lamella_break_force_uN", "uN", 1e-6, &P::lamella_break_force_N, 50, 0, true, 1e6, true,
-           "a middle-lamella bond breaks, for good, when its tension exceeds this", "model.md §10"),
+      real("tissue.lamella_strength_MPa", "MPa", 1e6, &P::lamella_strength_Pa, 1.5, 0, true, 1e4, true,
+           "a middle-lamella bond breaks, for good, when its tension exceeds this times the area a wall particle "
+           "owns (pi D0^2 / N_w: 51 uN for the default cell)", "model.md §10"),
       // fluid
       real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
            "dynamic viscosity mu", "Eq 4"),

@@ -33,7 +33,7 @@ struct Params {
   std::optional<double> wall_gap_m;     // between facing walls' particle layers (auto: t0)
   double contact_stiffness_N_m = 0;     // wall-wall repulsion between cells, Eq 22's form
   double lamella_stiffness_N_m = 0;     // middle-lamella bond spring
-  double lamella_break_force_N = 0;     // a bond breaks, for good, when its tension exceeds this
+  double lamella_strength_Pa = 0;       // a bond breaks when its tension exceeds this x a wall particle's area
 
   // fluid, Table 1
   double viscosity_Pa_s = 0;            // mu, Eq 4

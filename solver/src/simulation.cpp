@@ -146,7 +146,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
       cells_(tissue.cells),
       lamella_(tissue.lamella),
       contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m, p.lamella_stiffness_N_m,
-                   p.lamella_break_force_N},
+                   p.lamella_strength_Pa * tissue.wall_particle_area_m2},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},

@@ -100,6 +100,33 @@ Eigen::Vector3d onto_faces(const Eigen::Vector3d& x, double radius, const std::v
   return r < radius ? Eigen::Vector3d(r * u) : x;
 }
 
+// The spiral's axis for a cell with these faces: its poles (the wall's least regular triangles, which
+// hold the fluid least well) as far from every face and its rim as the candidates allow, and at least
+// kLatticeRowClearance from every low-index row of the fluid lattice (a row ending under a pole leaks:
+// wall_mesh.cpp). No faces: the single cell's default axis.
+constexpr double kLatticeRowClearance = 0.1;  // rad, about 6 degrees
+Eigen::Vector3d spiral_axis(const std::vector<Face>& faces) {
+  if (faces.empty()) return default_spiral_axis();
+  std::vector<Eigen::Vector3d> rows;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k)
+        if (i || j || k) rows.push_back(Eigen::Vector3d(i, j, k).normalized());
+  const Eigen::Matrix3Xd candidates = fibonacci_sphere(500, 1.0);
+  Eigen::Vector3d best = default_spiral_axis();
+  double best_score = INFINITY;
+  for (Eigen::Index c = 0; c < candidates.cols(); ++c) {
+    const Eigen::Vector3d u = candidates.col(c);
+    bool clear = true;
+    for (const auto& row : rows) clear = clear && u.dot(row) < std::cos(kLatticeRowClearance);
+    if (!clear) continue;
+    double score = 0;  // the largest |cos| between a pole and a face normal: smaller is farther
+    for (const auto& f : faces) score = std::max(score, std::abs(u.dot(f.normal)));
+    if (score < best_score) best_score = score, best = u;
+  }
+  return best;
+}
+
 bool inside_faces(const Eigen::Vector3d& x, const std::vector<Face>& faces, double margin_m) {
   for (const auto& f : faces)
     if (x.dot(f.normal) >= f.distance_m - margin_m) return false;
@@ -163,6 +190,7 @@ Tissue build_tissue(Params& p) {
   t.wall_mass_kg = model.wall_mass_kg;
   t.fluid_spacing_m = model.fluid_spacing_m;
   t.centre_m = centres;
+  t.wall_particle_area_m2 = M_PI * p.diameter_m * p.diameter_m / static_cast<double>(p.n_wall);
   std::vector<Eigen::Matrix3Xd> walls, fluids;
   std::vector<double> fluid_masses;
   for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
@@ -171,7 +199,7 @@ Tissue build_tissue(Params& p) {
     // The wall: a sphere with the wall's particle spacing, each point moved onto the faces; its
     // triangles are the sphere's (every point stays on a ray from the centre: still outward).
     const int n_wall = static_cast<int>(std::lround(static_cast<double>(p.n_wall) * scale * scale));
-    const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, rc);
+    const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, rc, spiral_axis(faces));
     const std::vector<std::array<int, 3>> triangles = convex_hull_triangles(sphere);
     Eigen::Matrix3Xd wall(3, sphere.cols());
     for (Eigen::Index k = 0; k < sphere.cols(); ++k) wall.col(k) = onto_faces(sphere.col(k), rc, faces);

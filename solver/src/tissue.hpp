@@ -39,6 +39,7 @@ struct Tissue {
   CellRanges cells;
   std::vector<Eigen::Vector3d> centre_m;  // each cell's centre as built
   std::vector<LamellaBond> lamella;       // facing wall particles, bonded
+  double wall_particle_area_m2 = 0;       // the area a wall particle owns: pi D0^2 / N_w
 };
 
 // Builds the tissue and fills in the derived parameters of p that are still unset (those of

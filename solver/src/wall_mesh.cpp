@@ -11,12 +11,17 @@
 
 namespace cellsim {
 
-Eigen::Matrix3Xd fibonacci_sphere(int n, double radius) {
-  // The spiral's two poles carry its largest, least regular triangles, where the LJ barrier against
-  // the fluid is weakest (model.md §4). Its axis lies in the equatorial plane, 1 rad from x: away from
-  // the plates (which load the wall-fluid layer most) and from every row of the cubic fluid lattice
-  // (a row ending under a pole triangle put a fluid particle right over its centre, and it leaked).
-  const Eigen::Vector3d axis(std::cos(1.0), std::sin(1.0), 0.0), e1(0.0, 0.0, 1.0), e2 = axis.cross(e1);
+// The spiral's two poles carry its largest, least regular triangles, where the LJ barrier against
+// the fluid is weakest (model.md §4). The default axis lies in the equatorial plane, 1 rad from x: away
+// from the plates (which load the wall-fluid layer most) and from every row of the cubic fluid lattice
+// (a row ending under a pole triangle put a fluid particle right over its centre, and it leaked).
+Eigen::Vector3d default_spiral_axis() { return Eigen::Vector3d(std::cos(1.0), std::sin(1.0), 0.0); }
+
+Eigen::Matrix3Xd fibonacci_sphere(int n, double radius, const Eigen::Vector3d& axis) {
+  // e1, e2 span the plane normal to the axis; e1 is z (or x for an axis near z) made normal to it.
+  const Eigen::Vector3d reference = std::abs(axis.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d e1 = (reference - reference.dot(axis) * axis).normalized();
+  const Eigen::Vector3d e2 = axis.cross(e1);
   Eigen::Matrix3Xd x(3, n);
   const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < n; ++i) {

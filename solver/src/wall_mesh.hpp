@@ -28,8 +28,12 @@ struct WallMesh {
 // Builds bonds and hinges from outward triangles; throws InputError if the surface is not closed.
 WallMesh build_wall_mesh(const Eigen::Matrix3Xd& positions, std::vector<std::array<int, 3>> triangles);
 
-// Points on a sphere by the golden-spiral (Fibonacci) lattice: quasi-uniform, deterministic.
-Eigen::Matrix3Xd fibonacci_sphere(int n, double radius);
+// The spiral's default axis: in the equatorial plane, 1 rad from x (wall_mesh.cpp says why).
+Eigen::Vector3d default_spiral_axis();
+
+// Points on a sphere by the golden-spiral (Fibonacci) lattice around `axis` (a unit vector):
+// quasi-uniform, deterministic; its two poles, on the axis, carry the least regular triangles.
+Eigen::Matrix3Xd fibonacci_sphere(int n, double radius, const Eigen::Vector3d& axis = default_spiral_axis());
 
 double largest_circumradius(const Eigen::Matrix3Xd& positions, const std::vector<std::array<int, 3>>& triangles);
 
