@@ -3,6 +3,7 @@
 #   snakemake --cores 2                               the paper's study (config/config.yaml)
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
 #   snakemake --cores 2 convergence                   resolution and time-step convergence (not default)
+#   snakemake --cores 2 tissue                        tissues of 8 and 27 cells (not default)
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -29,13 +30,14 @@ include: "workflow/rules/common.smk"
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
 localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
-    convergence, aggregate_convergence, convergence_page
+    convergence, aggregate_convergence, convergence_page, tissue, aggregate_tissue, tissue_page
 
 
 include: "workflow/rules/solver.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/analysis.smk"
 include: "workflow/rules/convergence.smk"
+include: "workflow/rules/tissue.smk"
 
 
 rule all:

@@ -75,6 +75,11 @@ def summarise(ts):
         "dried_mean_pressure_kPa": dried["mean_pressure_Pa"] / 1e3,
         "dried_wall_pressure_kPa": dried["wall_pressure_Pa"] / 1e3,
         "dried_wall_strain_mean": dried["wall_strain_mean"],
+        # A tissue's (NaN for one cell): the hull of all its walls, the air between its cells, bonds holding.
+        "dried_tissue_V_over_V0": dried.get("tissue_volume_m3", np.nan) / first.get("tissue_volume_m3", np.nan),
+        "dried_porosity": dried.get("porosity", np.nan),
+        "dried_lamella_intact": dried.get("lamella_intact", np.nan),
+        "lamella_bonds": first.get("lamella_intact", np.nan),
     }
     if len(compression):
         start, end = compression.iloc[0], compression.iloc[-1]
@@ -85,10 +90,13 @@ def summarise(ts):
             "compression_A_change": end["area_m2"] / start["area_m2"] - 1,
             "end_mean_pressure_kPa": end["mean_pressure_Pa"] / 1e3,
             "end_wall_strain_mean": end["wall_strain_mean"],
+            "end_lamella_intact": end.get("lamella_intact", np.nan),
         })
         for e in STRAINS:
             out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
             out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
+            out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
+                                                       if "footprint_stress_Pa" in ts else np.nan)
         force_ratio, fluid_share = load_partition(compression)
         out["load_F_over_pA"] = force_ratio
         out["load_fluid_share"] = fluid_share

@@ -2,7 +2,8 @@
 that sets `CELL_DATA` (loaded with <script src>, so the page works from disk, offline). The data are
 float32 arrays, base64-encoded: wall and fluid positions of up to MAX_DRYING + MAX_COMPRESSION
 snapshots (drying from the dried state's file, compression from the case's), each fluid particle's
-pressure and each wall particle's bond strain (the mean (l - l0)/l0 of its bonds)."""
+pressure and each wall particle's bond strain (the mean (l - l0)/l0 of its bonds); and each particle's
+cell, so that a tissue's cells can be told apart."""
 import base64
 import json
 import pathlib
@@ -41,6 +42,7 @@ def data(case_name, result, dried, plate_um=150.0):
     picked += [(result, s) for s in evenly([s for s in snapshots(result) if s[2] == 1], MAX_COMPRESSION)]
     with open_result(result) as f:
         bonds, rest = f["mesh/bonds"][()], f["mesh/bond_rest_length"][()]
+        wall_cell, fluid_cell = f["mesh/wall_cell"][()], f["mesh/fluid_cell"][()]
     frames = []
     for path, (group, time_s, stage) in picked:
         snap = snapshot(path, group)
@@ -51,7 +53,8 @@ def data(case_name, result, dried, plate_um=150.0):
                        "plates_um": [z * 1e6 if np.isfinite(z) else None
                                      for z in (snap["plate_top_z_m"], snap["plate_bottom_z_m"])]})
     return {"case": case_name, "n_wall": len(snap["wall"]), "n_fluid": len(snap["fluid"]), "plate_um": plate_um,
-            "triangles": _b64(snap["triangles"], "<u4"), "frames": frames}
+            "triangles": _b64(snap["triangles"], "<u4"), "n_cells": int(wall_cell.max()) + 1,
+            "wall_cell": _b64(wall_cell, "<u4"), "fluid_cell": _b64(fluid_cell, "<u4"), "frames": frames}
 
 
 def write(case_name, result, dried, html_path, data_path, plate_um=150.0):

@@ -10,8 +10,8 @@ set after every axis's own key, and a hidden axis's value is read back from the 
 a name always says what the case runs. The dried state of a case is the same name
 without the axes that only touch the compression stage.
 
-A study with `target: convergence` is not part of the default target (`snakemake --cores 2`); it
-runs with `snakemake --cores 2 convergence`.
+A study with a `target` (convergence, tissue) is not part of the default target (`snakemake --cores 2`);
+it runs with `snakemake --cores 2 <target>`.
 """
 import copy
 import itertools
@@ -105,10 +105,11 @@ def check(config, root="."):
                     if fmt(value) not in known:
                         raise ConfigError(f"studies.{study}.vary.{axis}: value {fmt(value)} is not one of the "
                                           f"axis's values {known} (axes.{axis}.coupled names them)")
-    references = config.get("references", {})
-    for ref, spec in references.items():
-        if not (pathlib.Path(root) / spec["file"]).is_file():
-            raise ConfigError(f"references.{ref}.file: no such file '{spec['file']}'")
+    references, shrinkage = config.get("references", {}), config.get("shrinkage_references", {})
+    for section, entries in (("references", references), ("shrinkage_references", shrinkage)):
+        for ref, spec in entries.items():
+            if not (pathlib.Path(root) / spec["file"]).is_file():
+                raise ConfigError(f"{section}.{ref}.file: no such file '{spec['file']}'")
     from analysis.quantities import DRAWABLE  # the solver's time series and those derived from them
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
@@ -133,6 +134,11 @@ def check(config, root="."):
         for ref in spec.get("references", []):
             if ref not in references:
                 raise ConfigError(f"{where}.references: unknown reference '{ref}'; known: {sorted(references)}")
+        for ref in spec.get("shrinkage_references", []):
+            if ref not in shrinkage:
+                raise ConfigError(f"{where}.shrinkage_references: unknown reference '{ref}'; known: {sorted(shrinkage)}")
+        if spec["family"] == "shrinkage" and "dryness" not in config["studies"][spec["study"]]["vary"]:
+            raise ConfigError(f"{where}: a shrinkage figure needs a study that varies dryness")
         if not figure_cases(config, fig, expand(config)):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
     check_cases(config, root)

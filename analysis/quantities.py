@@ -35,6 +35,10 @@ QUANTITIES = {
     "plate_stress_Pa": ("plate stress [kPa]", 1e-3),
     "section_stress_Pa": ("section stress [kPa]", 1e-3),
     "contact_stress_Pa": ("contact stress [kPa]", 1e-3),
+    "footprint_stress_Pa": ("stress over the footprint [kPa]", 1e-3),
+    "lamella_intact": ("middle-lamella bonds intact", 1.0),
+    "tissue_volume_m3": ("tissue volume (hull) [10^6 um^3]", 1e12),
+    "porosity": ("porosity", 1.0),
 }
 
 # Derived by analysis/aggregate.py from the solver's series, for every run alike.

@@ -131,6 +131,12 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
                  "<a href='convergence.html'>convergence.html</a> beside this page, with its tables and figures (the "
                  "link works once that target has run). What they showed is summed up under 'Convergence' in the "
                  "model closures below.</p>")
+    parts.append("<h2>Tissues</h2>")
+    parts.append("<p>The paper's future work: tissues of 8 and 27 of its cells, bonded by a middle lamella, dried "
+                 "and compressed beside the single cell (docs/model.md §10). They are a target of their own: "
+                 "<code>snakemake --cores 2 tissue</code> writes <a href='tissue.html'>tissue.html</a> beside this "
+                 "page (the link works once that target has run), with the tissues' stress against the single "
+                 "cell's, their shrinkage against reference lines, and their bonds.</p>")
     parts.append("<h2>Model closures</h2>")
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
     write_page(path, "cellsim reproduction report", parts)

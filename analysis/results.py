@@ -67,6 +67,7 @@ def snapshot(path, group):
             "pressure": g["fluid_pressure"][()], "time_s": float(g.attrs["time_s"]),
             "stage": int(g.attrs["stage"]), "plate_top_z_m": float(g.attrs["plate_top_z_m"]),
             "plate_bottom_z_m": float(g.attrs["plate_bottom_z_m"]), "triangles": f["mesh/triangles"][()],
+            "wall_cell": f["mesh/wall_cell"][()], "fluid_cell": f["mesh/fluid_cell"][()],
         }
 
 

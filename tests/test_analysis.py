@@ -20,7 +20,7 @@ def test_matrix_deduplicates_and_shares_dried_states(config):
     assert len(matrix.target_cases(config, cases)) == 48  # the paper's studies, the default target
     baseline = cases["D150_G18_P200_t6_v1_X1"]
     assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size",
-                                     "convergence_resolution", "convergence_time_step", "coupling_comparison"}
+                                     "convergence_resolution", "convergence_time_step", "coupling_comparison", "tissue"}
     fast = cases["D150_G18_P200_t6_v10_X0.5"]
     assert fast.dried == cases["D150_G18_P200_t6_v1_X0.5"].dried == "D150_G18_P200_t6_X0.5"
     assert fast.case["compression"]["plate_speed_m_s"] == 10 and fast.case["drying"]["dryness"] == 0.5
@@ -235,3 +235,43 @@ def test_convergence_verdicts_say_no_and_incomplete(config):
     table = convergence.study_table(config, "convergence_resolution", two_levels)
     assert list(convergence.verdicts(config, table)["converged"]) == ["incomplete"]
     assert np.isnan(convergence.observed_order(100, 110, 99, 1.41, 1.41))  # no monotone shrinking: no order
+
+
+def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
+    cases = matrix.expand(config)
+    tissue = matrix.target_cases(config, cases, "tissue")
+    assert len(tissue) == 9  # 3 dryness x (1, 8, 27 cells)
+    default = set(matrix.target_cases(config, cases))
+    assert {n for n in tissue if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
+                                                   "D150_G18_P200_t6_v1_X0.1"}  # one cell: the paper's case
+    big = cases["D150_G18_N27_P200_t6_v1_X0.1"]
+    assert big.case["tissue"] == {"cells_x": 3, "cells_y": 3, "cells_z": 3}
+    assert big.case["compression"]["plate_length_um"] == 600 and big.dried == "D150_G18_N27_P200_t6_X0.1"
+    assert matrix.target_figures(config, "tissue") == ["tis01", "tis02", "tis03", "tis04"]
+    assert not set(matrix.target_figures(config, "tissue")) & set(matrix.target_figures(config))
+
+
+def test_shrinkage_figure_needs_known_references_and_a_study_that_dries(config):
+    bad = dict(config, figures=dict(config["figures"], tis04=dict(config["figures"]["tis04"],
+                                                                 shrinkage_references=["nonesuch"])))
+    with pytest.raises(matrix.ConfigError, match=r"figures.tis04.shrinkage_references: unknown reference 'nonesuch'"):
+        matrix.check(bad, ".")
+
+
+def test_shrinkage_figure_draws_cells_tissues_and_reference_lines(config, root):
+    from analysis.figures import shrinkage
+    rows = []
+    for cells in (1, 8):
+        for x in (1.0, 0.5, 0.1):
+            tissue_v = 0.35 + 0.6 * x if cells > 1 else np.nan
+            rows.append({"cells": cells, "dryness": x, "dried_V_over_V0": 0.3 + 0.7 * x,
+                         "dried_tissue_V_over_V0": tissue_v})
+    figure = shrinkage.draw(config, "tis04", pd.DataFrame(rows), root)
+    ax = figure.axes[0]
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert labels[:3] == ["cells = 8: tissue (hull of its walls)", "cells = 8: its cells' own volumes", "cells = 1"]
+    assert len(ax.get_lines()) == 3 + len(config["figures"]["tis04"]["shrinkage_references"])
+    tissue_line = ax.get_lines()[0]
+    assert list(tissue_line.get_ydata()) == pytest.approx([0.35 + 0.6 * x for x in (0.1, 0.5, 1.0)])
+    ideal = [line for line in ax.get_lines() if line.get_label().startswith("volume lost")][0]
+    assert list(ideal.get_xdata()) == [0, 1] and list(ideal.get_ydata()) == pytest.approx([0.1, 1.0])

@@ -30,6 +30,9 @@ CASES = {
     "description_not_string.json": "description = 42", "dt_too_large.json": "wall-spring stability limit",
     "coupling_model_unknown.json": 'coupling.model = "springs": expected one of lennard_jones, pressure',
     "coupling_model_number.json": "coupling.model = 1",
+    "tissue_cells_overlap.json": "tissue.centre_distance_over_diameter", "tissue_zero_cells.json": "tissue.cells_x = 0",
+    "tissue_packing_unknown.json": 'tissue.packing = "hexagonal": expected one of cubic, close',
+    "tissue_negative_strength.json": "tissue.lamella_strength_MPa = -1",
 }
 
 # workflow config (merged over config/config.yaml) -> what the message must name
@@ -42,7 +45,8 @@ CONFIGS = {
     "figure_unknown_quantity.yaml": "stres", "figure_unknown_reference.yaml": "oey2007",
     "reference_missing_file.yaml": "none.csv", "reference_bad_unit.yaml": "permille",
     "study_unknown_level.yaml": "studies.extra.vary.resolution: value 5",
-    "study_target_all.yaml": "'all' is not one of ['convergence']",
+    "study_target_all.yaml": "'all' is not one of ['convergence', 'tissue']",
+    "shrinkage_reference_unknown.yaml": "figures.tis04.shrinkage_references: unknown reference 'nonesuch'",
 }
 
 

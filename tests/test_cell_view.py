@@ -57,3 +57,33 @@ def test_pages_render_each_snapshot_offline(small_runs, tmp_path):
             if keep:
                 shutil.copy(png, keep)
         assert np.abs(pictures[0] - pictures[1]).mean() > 0.01, f"{name}: the two slider positions look the same"
+
+
+def test_a_tissue_page_colours_each_cell(cellsim, tmp_path):
+    """Two small cells side by side (model.md §10): the page opens coloured by cell, in two colours."""
+    case = tmp_path / "tissue.json"
+    case.write_text('{"cell": {"n_wall": 162, "n_fluid": 120, "diameter_um": 40}, "time": {"dt_ns": 0.5},'
+                    ' "tissue": {"cells_x": 2, "wall_gap_um": 1.6}, "settle": {"max_iterations": 200},'
+                    ' "drying": {"steps": 400}, "compression": {"steps": 400, "plate_length_um": 120,'
+                    ' "plate_width_um": 120, "gap_um": 0.2}, "output": {"snapshot_every": 200}}')
+    result = tmp_path / "tissue.h5"
+    subprocess.run([cellsim, "run", str(case), "-o", str(result), "--quiet"], check=True, capture_output=True)
+    report = tmp_path / "report"
+    (report / "cells").mkdir(parents=True)
+    (report / "js").mkdir()
+    shutil.copy(THREE / "three.min.js", report / "js")
+    shutil.copy(THREE / "examples" / "js" / "controls" / "OrbitControls.js", report / "js")
+    page, data = report / "cells" / "tissue.html", report / "cells" / "tissue.data.js"
+    cell_view.write("tissue", result, result, page, data)
+    assert '"n_cells": 2' in data.read_text()
+    dom = browse(page, "snapshot=0", tmp_path, "--dump-dom").stdout
+    assert re.search(r'<div id="status">rendered snapshot 1 of \d+</div>', dom), dom[-2000:]
+    assert "each cell its own colour" in dom
+    png = tmp_path / "tissue.png"
+    browse(page, "snapshot=0", tmp_path, f"--screenshot={png}")
+    image = matplotlib.image.imread(png)[200:, :, :3]
+    # The first two cell colours (blue 0.12, 0.47, 0.71 and orange 1.0, 0.5, 0.05), lit and half
+    # transparent over white: blue-dominant and red-dominant pixels both appear.
+    blue = (image[..., 2] > image[..., 0] + 0.15).mean()
+    orange = (image[..., 0] > image[..., 2] + 0.25).mean()
+    assert blue > 0.002 and orange > 0.002, (blue, orange)

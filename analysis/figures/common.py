@@ -87,6 +87,12 @@ def legend_below(legend_axes, panels):
                            ncol=columns, frameon=False, borderaxespad=0.0)
 
 
+def line_colours(n):
+    """n colours of one sequential map, for lines ordered by an axis's value."""
+    cmap = plt.get_cmap("viridis")
+    return [cmap(0.9 * i / max(1, n - 1)) for i in range(n)]
+
+
 def panel_letter(index):
     return "(" + "abcdefghijklmnopqrstuvwxyz"[index] + ")"
 

@@ -3,7 +3,7 @@ quantity, with experimental reference curves on stress-strain panels (figures 4-
 import numpy as np
 
 from analysis import quantities
-from analysis.figures.common import legend_below, ordered, panel_letter, row_with_legend, value_label
+from analysis.figures.common import legend_below, line_colours, ordered, panel_letter, row_with_legend, value_label
 from analysis.references import load as load_reference
 
 
@@ -21,20 +21,20 @@ def draw(config, fig, series, root="."):
     panels = [(y, pv) for pv in panel_values for y in ys]
     grouper = line_axes[0] if len(line_axes) == 1 else line_axes
     n_lines = series.groupby(grouper).ngroups if line_axes else 1
-    n_references = len(spec.get("references", [])) if x == "nominal_strain" and "plate_stress_Pa" in ys else 0
+    n_references = len(spec.get("references", [])) if x == "nominal_strain" and any(map(is_stress, ys)) else 0
 
     figure, axes, legend_axes = row_with_legend(len(panels), n_lines + n_references, sharey=len(ys) == 1)
     for k, ((y, pv), ax) in enumerate(zip(panels, axes)):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
         groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
-        colours = _colours(len(groups))
+        colours = line_colours(len(groups))
         for (key, curve), colour in zip(groups, colours):
             key = key if isinstance(key, tuple) else (key,)
             label = ", ".join(value_label(config, a, v) for a, v in zip(line_axes, key))
             curve = curve.sort_values("time_s")
             ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.4,
                     label=label or None)
-        if x == "nominal_strain" and y == "plate_stress_Pa":
+        if x == "nominal_strain" and is_stress(y):
             _draw_references(config, spec, ax, root)
         title = panel_letter(k) if len(panels) > 1 else ""
         if pv is not None:
@@ -50,10 +50,9 @@ def draw(config, fig, series, root="."):
     return figure
 
 
-def _colours(n):
-    import matplotlib.pyplot as plt
-    cmap = plt.get_cmap("viridis")
-    return [cmap(0.9 * i / max(1, n - 1)) for i in range(n)]
+def is_stress(quantity):
+    """A stress (plate, section, contact, footprint): the reference curves of tissue stress share its axes."""
+    return quantity.endswith("_stress_Pa")
 
 
 def _mark_compression_start(ax, data):

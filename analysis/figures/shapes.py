@@ -1,11 +1,18 @@
 """Shapes family: mid-plane slices (y = cell centre) of particle snapshots; the wall is the
 intersection of its triangles with the plane, the fluid particles near the plane are dots, and the
-plates are drawn where they are (figures 2, 3, 8, 17)."""
+plates are drawn where they are (figures 2, 3, 8, 17). In a tissue the plane goes through the row of
+cells nearest the tissue's centre, and each cell's wall has its own colour."""
 import numpy as np
 from matplotlib.collections import LineCollection
 
 from analysis.figures.common import grid, moment_label, ordered, panel_letter, value_label
 from analysis.results import pick_snapshot
+
+ROW_TIE_M = 20e-6  # rows this much nearer the middle than another count as equally near (rows are ~100 um apart)
+
+# A tissue's walls: neighbouring cells in the slice get different colours (none of them fluid blue).
+TISSUE_COLOURS = ["darkgreen", "tab:orange", "tab:purple", "tab:brown", "tab:olive", "tab:red", "tab:pink",
+                  "tab:gray", "tab:cyan"]
 
 
 def wall_section(wall, triangles, y0):
@@ -24,12 +31,26 @@ def wall_section(wall, triangles, y0):
     return np.array(segments)
 
 
+def slice_plane_y(wall, wall_cell):
+    """y of the plane: the centre of the cell whose centre lies nearest the middle in y (for one
+    cell, its centre). Of rows about as near (within ROW_TIE_M: an even count of rows), the first cell's,
+    so that every panel of a figure cuts the same row."""
+    centres = np.array([wall[wall_cell == c, 1].mean() for c in np.unique(wall_cell)])
+    distance = np.abs(centres - wall[:, 1].mean())
+    return centres[np.nonzero(distance <= distance.min() + ROW_TIE_M)[0][0]]
+
+
 def draw_slice(ax, snap, plate_length_m, scale=1e6):
-    wall, fluid = snap["wall"], snap["fluid"]
+    wall, fluid, wall_cell = snap["wall"], snap["fluid"], snap["wall_cell"]
     centre = wall.mean(axis=0)
-    segments = wall_section(wall, snap["triangles"], centre[1])
-    if len(segments):
-        ax.add_collection(LineCollection((segments - centre[[0, 2]]) * scale, colors="darkgreen", linewidths=1.3))
+    centre[1] = slice_plane_y(wall, wall_cell)
+    cells = np.unique(wall_cell)
+    for c in cells:
+        in_cell = np.all(wall_cell[snap["triangles"]] == c, axis=1)
+        segments = wall_section(wall, snap["triangles"][in_cell], centre[1])
+        if len(segments):
+            colour = "darkgreen" if len(cells) == 1 else TISSUE_COLOURS[c % len(TISSUE_COLOURS)]
+            ax.add_collection(LineCollection((segments - centre[[0, 2]]) * scale, colors=colour, linewidths=1.3))
     spacing = np.median(np.abs(np.diff(np.sort(fluid[:, 1])))[np.abs(np.diff(np.sort(fluid[:, 1]))) > 0]) \
         if len(fluid) > 1 else 1e-6
     near = np.abs(fluid[:, 1] - centre[1]) < max(spacing, 2e-6) * 2
@@ -62,6 +83,7 @@ def draw(config, fig, runs, cases):
 
     rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
     figure, axes = grid(len(rows), len(cols), panel_w=2.7, panel_h=2.7)
+    tissue = False
     for i, rv in enumerate(rows):
         for j, cv in enumerate(cols):
             ax = axes[i][j]
@@ -74,6 +96,7 @@ def draw(config, fig, runs, cases):
                 continue
             path, dried = runs[match[0].name]
             snap = pick_snapshot(path, moment, dried)
+            tissue = tissue or snap["wall_cell"].max() > 0
             plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
             draw_slice(ax, snap, plate_length)
             label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
@@ -84,5 +107,6 @@ def draw(config, fig, runs, cases):
                 ax.set_ylabel("z [um]", fontsize=8)
             if i == len(rows) - 1:
                 ax.set_xlabel("x [um]", fontsize=8)
-    figure.suptitle(spec["title"] + " (mid-plane slice: wall green, fluid blue, plates black)", fontsize=10)
+    walls = "walls coloured by cell" if tissue else "wall green"
+    figure.suptitle(spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black)", fontsize=10)
     return figure

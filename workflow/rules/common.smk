@@ -24,6 +24,15 @@ def job_resources(kind, what, default):
     return config.get("resources", {}).get(kind, {}).get(what, default)
 
 
+def run_resources(kind, case, what, default):
+    """A run's threads, memory or time: a tissue's (a case of more than one cell) from `tissue`, any
+    other from its kind (dry, compress)."""
+    cells = 1
+    for axis in ("cells_x", "cells_y", "cells_z"):
+        cells *= case.get("tissue", {}).get(axis, 1)
+    return job_resources("tissue" if cells > 1 else kind, what, default)
+
+
 def run_file(case):
     return f"{OUT}/runs/{case}.h5"
 

@@ -36,10 +36,10 @@ rule dry:
         fluid=f"{OUT}/runs/dried/{{dried}}.fluid.xdmf",
     log:
         f"{OUT}/logs/dry/{{dried}}.log",
-    threads: job_resources("dry", "threads", 1)
+    threads: lambda w: run_resources("dry", DRIED[w.dried], "threads", 1)
     resources:
-        mem_mb=job_resources("dry", "mem_mb", 1000),
-        runtime=job_resources("dry", "runtime_min", 30),
+        mem_mb=lambda w: run_resources("dry", DRIED[w.dried], "mem_mb", 1000),
+        runtime=lambda w: run_resources("dry", DRIED[w.dried], "runtime_min", 30),
     shell:
         "{input.exe:q} run {input.case:q} --set compression.steps=0 --threads {threads} -o {output.h5:q} > {log:q} 2>&1"
 
@@ -55,9 +55,9 @@ rule compress:
         fluid=f"{OUT}/runs/{{case}}.fluid.xdmf",
     log:
         f"{OUT}/logs/compress/{{case}}.log",
-    threads: job_resources("compress", "threads", 1)
+    threads: lambda w: run_resources("compress", CASES[w.case].case, "threads", 1)
     resources:
-        mem_mb=job_resources("compress", "mem_mb", 1000),
-        runtime=job_resources("compress", "runtime_min", 20),
+        mem_mb=lambda w: run_resources("compress", CASES[w.case].case, "mem_mb", 1000),
+        runtime=lambda w: run_resources("compress", CASES[w.case].case, "runtime_min", 20),
     shell:
         "{input.exe:q} run {input.case:q} --from {input.dried:q} --threads {threads} -o {output.h5:q} > {log:q} 2>&1"

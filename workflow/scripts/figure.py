@@ -3,7 +3,7 @@ import pathlib
 
 import _path  # noqa: F401
 from analysis import aggregate, matrix
-from analysis.figures import common, curves, model, shapes
+from analysis.figures import common, curves, model, shapes, shrinkage
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config, fig = sm.config, sm.wildcards.fig
@@ -11,9 +11,9 @@ cases = matrix.expand(config)
 names = matrix.figure_cases(config, fig, cases)
 family = config["figures"][fig]["family"]
 root = _path.ROOT
-if family == "curves":
-    series, _ = aggregate.tables([(cases[n], f"{config['output_dir']}/runs/{n}.h5") for n in names])
-    figure = curves.draw(config, fig, series, root)
+if family in ("curves", "shrinkage"):
+    series, summary = aggregate.tables([(cases[n], f"{config['output_dir']}/runs/{n}.h5") for n in names])
+    figure = curves.draw(config, fig, series, root) if family == "curves" else shrinkage.draw(config, fig, summary, root)
 else:
     runs = {n: (f"{config['output_dir']}/runs/{n}.h5", f"{config['output_dir']}/runs/dried/{cases[n].dried}.h5")
             for n in names}
