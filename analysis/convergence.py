@@ -7,7 +7,6 @@ mean over the records within +-0.01 strain of it (aggregate.smoothed_stress_at_s
 ripple of the plate contact from record to record does not pass for a change of the curve."""
 import html
 import math
-import os
 import pathlib
 
 import numpy as np
@@ -155,9 +154,5 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
     for study, rows in (compared or {}).items():
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
         parts.append(report.frame_table(rows.rename(columns=dict(METRICS))))
-    parts.append("<h2>Figures</h2>")
-    for fig, png in figure_files.items():
-        spec = config["figures"][fig]
-        parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
-                     f"<figcaption><b>{fig}.</b> {html.escape(spec['title'])}.</figcaption></figure>")
+    parts.append(report.figure_list(config, figure_files, here))
     report.write_page(path, f"cellsim {target}", parts)

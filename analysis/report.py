@@ -23,6 +23,15 @@ def write_page(path, title, parts):
                                   f"</title><style>{STYLE}</style></head><body>{''.join(parts)}</body></html>\n")
 
 
+def figure_list(config, figure_files, here):
+    """'Figures' and each figure (PNG relative to the page's folder `here`) with its title as caption."""
+    parts = ["<h2>Figures</h2>"]
+    for fig, png in figure_files.items():
+        parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
+                     f"<figcaption><b>{fig}.</b> {html.escape(config['figures'][fig]['title'])}.</figcaption></figure>")
+    return "".join(parts)
+
+
 def cell_text(value):
     """A table cell's text: numbers to 4 significant digits, NaN as empty, names as they are."""
     if isinstance(value, float):

@@ -2,8 +2,6 @@
 dryness, the shrinkage and porosity at the end of drying, the stress at strains 0.05 and 0.10 against
 the single cell's (stress = top-plate force / footprint at compression start, for both), and the
 middle-lamella bonds: how many broke, when, and on which faces."""
-import html
-import os
 import pathlib
 
 import numpy as np
@@ -81,9 +79,5 @@ def write_page(path, config, frame, figure_files, target="tissue"):
              "Choices and their reasons: model closures, 'Tissue'.</p>"]
     parts.append("<h2>Tissues against the single cell</h2>")
     parts.append(report.frame_table(frame.drop(columns=["case"])))
-    parts.append("<h2>Figures</h2>")
-    for fig, png in figure_files.items():
-        spec = config["figures"][fig]
-        parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
-                     f"<figcaption><b>{fig}.</b> {html.escape(spec['title'])}.</figcaption></figure>")
+    parts.append(report.figure_list(config, figure_files, here))
     report.write_page(path, f"cellsim {target}", parts)

@@ -51,6 +51,16 @@ def run_ci_workflow(root, out, *extra, timeout=1800):
                           text=True, timeout=timeout)
 
 
+def run_reduced_target(root, out, target, reduced_config, timeout=1800):
+    """snakemake `target` on config/ci.yaml and a reduced config (tests/*_reduced.yaml) into `out`;
+    asserts that it succeeds and returns `out`."""
+    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", target, "--configfile", "config/ci.yaml",
+                           reduced_config, "--config", f"output_dir={out}", "-q"], cwd=root,
+                          capture_output=True, text=True, timeout=timeout)
+    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
+    return out
+
+
 @pytest.fixture(scope="session")
 def ci_run(root, tmp_path_factory):
     """The whole workflow on config/ci.yaml, uninterrupted; shared by the tests that need it."""

@@ -1,21 +1,17 @@
 """The convergence target end to end on reduced cells (tests/convergence_reduced.yaml): its runs, its
 table and page, its figures, and none of the default target's. Slow: about two minutes on 2 cores."""
-import subprocess
-
 import pandas as pd
 import pytest
+
+from conftest import run_reduced_target
 
 pytestmark = pytest.mark.slow
 
 
 @pytest.fixture(scope="module")
 def convergence_run(root, tmp_path_factory):
-    out = tmp_path_factory.mktemp("convergence results")
-    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", "convergence", "--configfile", "config/ci.yaml",
-                           "tests/convergence_reduced.yaml", "--config", f"output_dir={out}", "-q"], cwd=root,
-                          capture_output=True, text=True, timeout=1800)
-    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
-    return out
+    return run_reduced_target(root, tmp_path_factory.mktemp("convergence results"), "convergence",
+                              "tests/convergence_reduced.yaml")
 
 
 def test_table_has_every_refinement_with_its_changes(convergence_run):

@@ -1,22 +1,18 @@
 """The tissue target end to end on reduced cells (tests/tissue_reduced.yaml): its runs on two threads,
 its table and page, its four figures, the 3-D pages with each cell coloured, and none of the default
 target's. Slow: a few minutes on 2 cores."""
-import subprocess
-
 import pandas as pd
 import pytest
+
+from conftest import run_reduced_target
 
 pytestmark = pytest.mark.slow
 
 
 @pytest.fixture(scope="module")
 def tissue_run(root, tmp_path_factory):
-    out = tmp_path_factory.mktemp("tissue results")
-    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", "tissue", "--configfile", "config/ci.yaml",
-                           "tests/tissue_reduced.yaml", "--config", f"output_dir={out}", "-q"], cwd=root,
-                          capture_output=True, text=True, timeout=2400)
-    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
-    return out
+    return run_reduced_target(root, tmp_path_factory.mktemp("tissue results"), "tissue", "tests/tissue_reduced.yaml",
+                              timeout=2400)
 
 
 def test_tissue_table_compares_each_tissue_with_the_single_cell(tissue_run):
