@@ -237,3 +237,24 @@ TEST(Tissue, InterpenetratingWallsStopTheRunNamingBothCells) {
     EXPECT_NE(what.find("the walls interpenetrate"), std::string::npos) << what;
   }
 }
+
+// Per-cell sums (wall pressure, closure, Eq 11) cut at the cells' ends within the threads' blocks: the
+// same bytes twice on two threads, and one thread's result to round-off.
+TEST(Tissue, TwoThreadsRepeatAndAgreeWithOne) {
+  Params p = tissue_case(2, 1, 1);
+  const Tissue tissue = build_tissue(p);
+  const auto run = [&](int threads) {
+    Simulation sim(p, tissue);
+    sim.set_threads(threads);
+    for (int n = 0; n < 30; ++n) sim.step();
+    return sim.state();
+  };
+  const State one = run(1), two = run(2), again = run(2);
+  EXPECT_EQ(two.fluid.x, again.fluid.x);
+  EXPECT_EQ(two.fluid.m, again.fluid.m);
+  EXPECT_EQ(two.wall.x, again.wall.x);
+  EXPECT_LT((two.fluid.x - one.fluid.x).cwiseAbs().maxCoeff(), 1e-12 * p.diameter_m);
+  EXPECT_LT((two.wall.x - one.wall.x).cwiseAbs().maxCoeff(), 1e-12 * p.diameter_m);
+  EXPECT_LT(((two.fluid.m - one.fluid.m).array() / one.fluid.m.array()).abs().maxCoeff(), 1e-12);
+  EXPECT_GT((one.fluid.x - tissue.fluid_x).cwiseAbs().maxCoeff(), 0.0);  // the particles moved
+}
