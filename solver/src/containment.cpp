@@ -58,7 +58,7 @@ bool ClosedSurface::box_overlaps(const ClosedSurface& other) const {
 }
 
 bool ClosedSurface::contains(const Eigen::Vector3d& p) const {
-  if (p.x() < lo_.x() || p.x() > hi_.x() || p.y() < lo_.y() || p.y() > hi_.y()) return false;
+  if ((p.array() < lo_.array()).any() || (p.array() > hi_.array()).any()) return false;  // outside the box
   int crossings = 0;
   for (int t : bin_triangles_[static_cast<std::size_t>(bin_of(p.y(), 1) * bins_ + bin_of(p.x(), 0))]) {
     const auto& tri = mesh_.triangles[static_cast<std::size_t>(t)];
