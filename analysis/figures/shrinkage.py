@@ -14,7 +14,8 @@ def draw(config, fig, summary, root="."):
     line_axis = spec["lines"]
     groups = ordered(summary[line_axis])
     references = spec.get("shrinkage_references", [])
-    tissue_groups = [v for v in groups if summary.loc[np.isclose(summary[line_axis], v), "dried_tissue_V_over_V0"].notna().any()]
+    tissue_groups = [v for v in groups
+                     if summary.loc[np.isclose(summary[line_axis], v), "dried_tissue_V_over_V0"].notna().any()]
     figure, (ax,), legend_axes = row_with_legend(1, len(groups) + len(tissue_groups) + len(references),
                                                  panel_w=4.6, panel_h=3.6)
     colours = line_colours(len(groups))

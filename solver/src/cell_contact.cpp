@@ -7,8 +7,9 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
                             std::vector<char>& intact, Eigen::Matrix3Xd& wall_force) {
   const double gap2 = law.gap_m * law.gap_m;
   for (int k = 0; k < wall_wall.rows(); ++k)
-    for (int q = wall_wall.offset[static_cast<std::size_t>(k)]; q < wall_wall.offset[static_cast<std::size_t>(k) + 1]; ++q) {
-      const int l = wall_wall.index[static_cast<std::size_t>(q)];
+    for (std::size_t q = static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k)]);
+         q < static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k) + 1]); ++q) {
+      const int l = wall_wall.index[q];
       const Eigen::Vector3d kl = wall_x.col(k) - wall_x.col(l);
       const double r2 = kl.squaredNorm();
       if (r2 >= gap2 || r2 == 0) continue;

@@ -7,8 +7,8 @@
 #include "cell_blocks.hpp"
 #include "containment.hpp"
 #include "drying.hpp"
-#include "hull.hpp"
 #include "errors.hpp"
+#include "hull.hpp"
 #include "mass_transfer.hpp"
 #include "plates.hpp"
 #include "pressure_closure.hpp"
@@ -30,7 +30,8 @@ constexpr double kContactPartners = 3;
 // Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
 double wall_spring_limit(const WallMesh& mesh, const std::vector<LamellaBond>& lamella, const Params& p,
                          double wall_mass, long n_wall) {
-  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m);
+  const double contact = lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m;
+  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), contact);
   const double k_bond = p.contraction_stiffness_N_m + 2.0 * p.G_Pa * p.thickness_m / std::sqrt(3.0);
   for (const auto& b : mesh.bonds) {
     k_sum[static_cast<std::size_t>(b[0])] += k_bond;
@@ -226,8 +227,9 @@ void Simulation::compute_rates() {
 }
 
 // The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0, D of
-// the volume of all cells (one h for a tissue: model.md §10). A wall that encloses no volume has collapsed or turned inside out: Eq 6 has no D, so the run stops
-// here (a non-finite volume comes from a non-finite position, which check_state names).
+// the volume of all cells (one h for a tissue: model.md §10). A wall that encloses no volume has
+// collapsed or turned inside out: Eq 6 has no D, so the run stops here (a non-finite volume comes from
+// a non-finite position, which check_state names).
 void Simulation::update_geometry() {
   surface_.update(s_.wall.x, mesh_, threads_);
   if (surface_.volume_m3 <= 0) {
@@ -303,7 +305,8 @@ void Simulation::wall_fluid_terms() {
 
 std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
   std::vector<double> mean(static_cast<std::size_t>(cells_.count()));
-  for (int c = 0; c < cells_.count(); ++c) mean[c] = fluid_.pressure.segment(cells_.fluid[c], cells_.fluid_count(c)).mean();
+  for (int c = 0; c < cells_.count(); ++c)
+    mean[c] = fluid_.pressure.segment(cells_.fluid[c], cells_.fluid_count(c)).mean();
   return mean;
 }
 
@@ -340,14 +343,13 @@ void Simulation::drift(double dt) {
 // The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
 void Simulation::apply_pressure_closure() {
   const Eigen::VectorXd& P = fluid_.pressure;
-  const std::vector<double> pressure_sum = sum_by_cell(threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) {
-    return P.segment(begin, end - begin).sum();
-  });
+  const std::vector<double> pressure_sum = sum_by_cell(
+      threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) { return P.segment(begin, end - begin).sum(); });
   std::vector<double> factor(pressure_sum.size());
   bool any = false;
   for (int c = 0; c < cells_.count(); ++c) {
-    factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], pressure_sum[c] / static_cast<double>(cells_.fluid_count(c)),
-                                        p_.dt_s, p_.pressure_closure_time_s);
+    const double mean_pressure = pressure_sum[c] / static_cast<double>(cells_.fluid_count(c));
+    factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], mean_pressure, p_.dt_s, p_.pressure_closure_time_s);
     any = any || factor[c] != 1.0;
   }
   if (any)

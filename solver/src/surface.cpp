@@ -78,7 +78,8 @@ void WallSurface::update(const Eigen::Matrix3Xd& x, const WallMesh& mesh, int th
     const int first = mesh.cell_triangles[c];
     cell_area_m2[c] = 0.5 * triangles.norm.segment(first, mesh.cell_triangles[c + 1] - first).sum();
     double six_volume = 0;
-    for (std::size_t t = 0; t < static_cast<std::size_t>(threads); ++t) six_volume += six_volume_[t * cells + c];  // threads in order
+    for (std::size_t t = 0; t < static_cast<std::size_t>(threads); ++t)
+      six_volume += six_volume_[t * cells + c];  // threads in order
     cell_volume_m3[c] = six_volume / 6.0;
     area_m2 += cell_area_m2[c];
     volume_m3 += cell_volume_m3[c];

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <random>
 #include <sstream>
-#include <tuple>
+#include <utility>
 
 #include "cell.hpp"
 #include "errors.hpp"
@@ -158,8 +158,9 @@ void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, d
   };
   for (int i : side_a) nearest(i, side_b);
   for (int j : side_b) nearest(j, side_a);
-  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
-  found.erase(std::unique(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.a == y.a && x.b == y.b; }),
+  const auto pair_of = [](const LamellaBond& bond) { return std::make_pair(bond.a, bond.b); };
+  std::sort(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) < pair_of(y); });
+  found.erase(std::unique(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) == pair_of(y); }),
               found.end());
   bonds.insert(bonds.end(), found.begin(), found.end());
 }
