@@ -61,7 +61,7 @@ void print_benchmark(const BenchResult& r) {
   std::printf("pair lists (cut-off + skin) at the end: %zu fluid-fluid, %zu fluid-wall; %zu bonds, %zu hinges\n",
               r.fluid_pairs, r.wall_pairs, r.bonds, r.hinges);
   const double m = r.median_ms();
-  std::printf("median %.4f ms/step (min %.4f, max %.4f), %.2f million particle-steps/s\n", m,
+  std::printf("median %.4f ms/step (min %.4f, max %.4f), %.4f million particle-steps/s\n", m,
               *std::min_element(r.ms_per_step.begin(), r.ms_per_step.end()),
               *std::max_element(r.ms_per_step.begin(), r.ms_per_step.end()), r.million_particle_steps_per_s());
   std::printf("%-46s %10s %7s\n", "phase (of the median repeat)", "ms/step", "share");
