@@ -167,17 +167,18 @@ void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, d
 
 }  // namespace
 
-std::vector<int> CellRanges::cell_of_fluid() const {
-  std::vector<int> cell(static_cast<std::size_t>(fluid.back()));
-  for (int c = 0; c < count(); ++c) std::fill(cell.begin() + fluid[c], cell.begin() + fluid[c + 1], c);
+namespace {
+// The cell of each particle, from each cell's first particle (first.back(): the particle count).
+std::vector<int> cell_of(const std::vector<Eigen::Index>& first) {
+  std::vector<int> cell(static_cast<std::size_t>(first.back()));
+  for (std::size_t c = 0; c + 1 < first.size(); ++c)
+    std::fill(cell.begin() + first[c], cell.begin() + first[c + 1], static_cast<int>(c));
   return cell;
 }
+}  // namespace
 
-std::vector<int> CellRanges::cell_of_wall() const {
-  std::vector<int> cell(static_cast<std::size_t>(wall.back()));
-  for (int c = 0; c < count(); ++c) std::fill(cell.begin() + wall[c], cell.begin() + wall[c + 1], c);
-  return cell;
-}
+std::vector<int> CellRanges::cell_of_fluid() const { return cell_of(fluid); }
+std::vector<int> CellRanges::cell_of_wall() const { return cell_of(wall); }
 
 Tissue build_tissue(Params& p) {
   const Cell model = build_cell(p);  // the paper's cell: derived parameters, dx, masses
