@@ -33,6 +33,7 @@ CASES = {
     "tissue_cells_overlap.json": "tissue.centre_distance_over_diameter", "tissue_zero_cells.json": "tissue.cells_x = 0",
     "tissue_packing_unknown.json": 'tissue.packing = "hexagonal": expected one of cubic, close',
     "tissue_negative_strength.json": "tissue.lamella_strength_MPa = -1",
+    "tissue_fracture_energy_below_elastic.json": "tissue.lamella_fracture_energy_J_m2 = 0.01",
 }
 
 # workflow config (merged over config/config.yaml) -> what the message must name

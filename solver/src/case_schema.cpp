@@ -82,8 +82,13 @@ std::vector<ParamSpec> build_specs() {
       real("tissue.lamella_stiffness_N_m", "N/m", 1.0, &P::lamella_stiffness_N_m, 1e3, 0, true, 1e9, true,
            "middle-lamella bond between facing wall particles, a spring at its initial length", "model.md §10"),
       real("tissue.lamella_strength_MPa", "MPa", 1e6, &P::lamella_strength_Pa, 1.5, 0, true, 1e4, true,
-           "a middle-lamella bond breaks, for good, when its tension exceeds this times the area a wall particle "
-           "owns (pi D0^2 / N_w: 51 uN for the default cell)", "model.md §10"),
+           "a middle-lamella bond's peak tension is this times the area a wall particle owns (pi D0^2 / N_w: "
+           "51 uN for the default cell); past it the bond softens", "model.md §10"),
+      real("tissue.lamella_fracture_energy_J_m2", "J/m^2", 1.0, &P::lamella_fracture_energy_J_m2, 1.0, 0, true, 1e6,
+           true,
+           "energy that separates a middle-lamella bond for good, per area a wall particle owns: the bond softens "
+           "linearly from its peak to zero force over this (0: brittle, it breaks at its peak)",
+           "model.md §10"),
       // fluid
       real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
            "dynamic viscosity mu", "Eq 4"),

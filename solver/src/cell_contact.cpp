@@ -1,10 +1,14 @@
 #include "cell_contact.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace cellsim {
 
 int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
                             const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
-                            std::vector<char>& intact, Eigen::Matrix3Xd& wall_force) {
+                            std::vector<char>& intact, std::vector<double>& peak_opening_m,
+                            Eigen::Matrix3Xd& wall_force) {
   const double gap2 = law.gap_m * law.gap_m;
   for (int k = 0; k < wall_wall.rows(); ++k)
     for (std::size_t q = static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k)]);
@@ -24,12 +28,14 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
     const LamellaBond& bond = bonds[b];
     const Eigen::Vector3d ab = wall_x.col(bond.b) - wall_x.col(bond.a);
     const double r = ab.norm();
-    const double tension = law.lamella_stiffness_N_m * (r - bond.length_m);
-    if (tension > law.lamella_break_force_N) {
+    const double opening = r - bond.length_m;
+    peak_opening_m[b] = std::max(peak_opening_m[b], opening);
+    if (law.lamella.separated(peak_opening_m[b])) {
       intact[b] = 0;
       ++broken;
       continue;
     }
+    const double tension = law.lamella.tension_N(opening, peak_opening_m[b]);
     const Eigen::Vector3d pull = tension / r * ab;  // on a, toward b
     wall_force.col(bond.a) += pull;
     wall_force.col(bond.b) -= pull;

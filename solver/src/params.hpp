@@ -33,7 +33,8 @@ struct Params {
   std::optional<double> wall_gap_m;     // between facing walls' particle layers (auto: t0)
   double contact_stiffness_N_m = 0;     // wall-wall repulsion between cells, Eq 22's form
   double lamella_stiffness_N_m = 0;     // middle-lamella bond spring
-  double lamella_strength_Pa = 0;       // a bond breaks when its tension exceeds this x a wall particle's area
+  double lamella_strength_Pa = 0;       // a bond's peak tension is this x a wall particle's area
+  double lamella_fracture_energy_J_m2 = 0;  // energy to separate a bond, per wall area it owns
 
   // fluid, Table 1
   double viscosity_Pa_s = 0;            // mu, Eq 4

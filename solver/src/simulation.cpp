@@ -27,6 +27,25 @@ constexpr double kSkinOverH0 = 0.15;
 // wall gap (the layers are one gap apart, their particles about one gap apart within each layer).
 constexpr double kContactPartners = 3;
 
+// The middle-lamella law from the case (lamella_law.hpp). A fracture energy too small to reach past
+// the elastic limit (G_f < F_max delta_0 / (2 a_w)) would soften over a negative distance: refused.
+LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
+  LamellaLaw law;
+  law.stiffness_N_m = p.lamella_stiffness_N_m;
+  law.peak_force_N = p.lamella_strength_Pa * wall_particle_area_m2;
+  law.break_opening_m =
+      lamella_break_opening_m(p.lamella_fracture_energy_J_m2, wall_particle_area_m2, law.peak_force_N);
+  if (p.lamella_fracture_energy_J_m2 > 0 && law.peak_force_N > 0 && law.break_opening_m <= law.elastic_limit_m()) {
+    const double least = law.peak_force_N * law.elastic_limit_m() / (2.0 * wall_particle_area_m2);
+    std::ostringstream msg;
+    msg << "tissue.lamella_fracture_energy_J_m2 = " << p.lamella_fracture_energy_J_m2
+        << " is less than the elastic energy a bond holds at its peak tension (" << least
+        << " J/m^2 with this strength and stiffness): give more, or 0 for a brittle bond";
+    throw InputError(msg.str());
+  }
+  return law;
+}
+
 // Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
 double wall_spring_limit(const WallMesh& mesh, const std::vector<LamellaBond>& lamella, const Params& p,
                          double wall_mass, long n_wall) {
@@ -146,8 +165,8 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
       mesh_(tissue.mesh),
       cells_(tissue.cells),
       lamella_(tissue.lamella),
-      contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m, p.lamella_stiffness_N_m,
-                   p.lamella_strength_Pa * tissue.wall_particle_area_m2},
+      contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m,
+                   lamella_law(p, tissue.wall_particle_area_m2)},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
@@ -162,6 +181,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
   s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
   s_.wall.mass_kg = tissue.wall_mass_kg;
   s_.lamella_intact.assign(lamella_.size(), 1);
+  s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
   if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
@@ -276,7 +296,8 @@ void Simulation::wall_terms() {
 // Contact and middle lamella between the walls of different cells (cell_contact.hpp); none for one cell.
 void Simulation::cell_contact_terms() {
   if (cells_.count() == 1) return;
-  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.lamella_intact, wall_force_);
+  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.lamella_intact,
+                          s_.lamella_peak_opening_m, wall_force_);
   timer_.lap(Phase::CellContact);
 }
 

@@ -43,7 +43,8 @@ struct State {
   FluidParticles fluid;
   WallParticles wall;
   Plates plates;
-  std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it breaks (model.md §10)
+  std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
+  std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
   Stage stage = Stage::Drying;
   std::int64_t step = 0;          // steps done in the whole run
   std::int64_t stage_step = 0;    // steps done in the current stage

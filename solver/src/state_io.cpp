@@ -57,6 +57,8 @@ void write_state(hid_t parent, const State& s) {
   if (!s.lamella_intact.empty())  // a tissue's bonds: which still hold (1) and which broke (0)
     h5::write(g.id(), "lamella_intact", std::vector<std::int32_t>(s.lamella_intact.begin(), s.lamella_intact.end()),
               {s.lamella_intact.size()});
+  if (!s.lamella_peak_opening_m.empty())
+    h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
 }
 
 SavedRun read_saved_run(const std::string& path) {
@@ -97,6 +99,9 @@ SavedRun read_saved_run(const std::string& path) {
     if (h5::exists(g.id(), "lamella_intact")) {
       const std::vector<std::int32_t> intact = h5::read_ints(g.id(), "lamella_intact");
       s.lamella_intact.assign(intact.begin(), intact.end());
+      s.lamella_peak_opening_m = h5::exists(g.id(), "lamella_peak_opening")
+                                     ? h5::read_doubles(g.id(), "lamella_peak_opening")
+                                     : std::vector<double>(intact.size(), 0.0);  // saved before the bond law had damage
     }
 
     h5::Handle ts = h5::open_group(file.id(), "timeseries");

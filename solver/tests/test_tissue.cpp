@@ -171,7 +171,8 @@ TEST(Tissue, AFluidParticleNeverFeelsAnotherCellsFluid) {
 }
 
 TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
-  CellContactLaw law{6e-6, 1e3, 2e3, 5e-3};
+  // Brittle lamella (delta_f = 0): k = 2e3 N/m, breaking at 5 mN.
+  CellContactLaw law{6e-6, 1e3, LamellaLaw{2e3, 5e-3, 0.0}};
   Eigen::Matrix3Xd x(3, 4);
   x << 0, 5e-6, 0, 0,  //
       0, 0, 20e-6, 27e-6,  //
@@ -183,8 +184,9 @@ TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
   // Particles 2 and 3: bonded at 6.5 um, now 7.07 um apart: a lamella in tension.
   const std::vector<LamellaBond> bonds = {{2, 3, 6.5e-6}};
   std::vector<char> intact = {1};
+  std::vector<double> peak = {0.0};
   Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 4);
-  EXPECT_EQ(add_cell_contact_forces(x, wall_wall, bonds, law, intact, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, wall_wall, bonds, law, intact, peak, force), 0);
   EXPECT_NEAR(force(0, 0), -1e3 * 1e-6, 1e-15);  // k_c (g - r), pushing 0 away from 1 (along -x)
   EXPECT_NEAR(force.col(0).norm(), 1e-3, 1e-15);
   const double r = (x.col(3) - x.col(2)).norm();
@@ -193,22 +195,76 @@ TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
   EXPECT_NEAR(force.rowwise().sum().norm(), 0.0, 1e-18);  // Newton's third law
   EXPECT_EQ(force.col(1), -force.col(0));
   EXPECT_EQ(force.col(3), -force.col(2));
+  EXPECT_NEAR(peak[0], r - 6.5e-6, 1e-18);
 
-  // The bond breaks, for good, when its tension passes the break force (here 2.1 mN): at 1.04 um of
-  // stretch (2.08 mN) it holds, at 1.06 um (2.12 mN) it breaks.
-  law.lamella_break_force_N = 2.1e-3;
+  // The brittle bond breaks, for good, when its tension passes the peak force (here 2.1 mN): at
+  // 1.04 um of stretch (2.08 mN) it holds, at 1.06 um (2.12 mN) it breaks.
+  law.lamella.peak_force_N = 2.1e-3;
+  const PairList no_contact{{0, 0, 0, 0, 0}, {}, 0, 0};
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.54e-6, 0);  // tension 2e3 x 1.04 um = 2.08 mN
   force.setZero();
-  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0);
   EXPECT_EQ(intact[0], 1);
   EXPECT_NEAR(force(1, 2), 2.08e-3, 1e-12);
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.56e-6, 0);  // 2.12 mN
   force.setZero();
-  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 1);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 1);
   EXPECT_EQ(intact[0], 0);
   EXPECT_EQ(force.norm(), 0.0);
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.0e-6, 0);  // back within strength: stays broken
-  EXPECT_EQ(add_cell_contact_forces(x, PairList{{0, 0, 0, 0, 0}, {}, 0, 0}, bonds, law, intact, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0);
+  EXPECT_EQ(force.norm(), 0.0);
+}
+
+TEST(LamellaLaw, SoftensFromItsPeakToZeroAndDissipatesTheFractureEnergy) {
+  // k = 1e3 N/m, F_max = 51 uN (delta_0 = 51 nm); G_f = 1 J/m^2 over a_w = 34 um^2: delta_f = 1.333 um.
+  const double a_w = 34e-12, f_max = 51e-6;
+  const LamellaLaw law{1e3, f_max, lamella_break_opening_m(1.0, a_w, f_max)};
+  EXPECT_NEAR(law.break_opening_m, 2.0 * 34e-12 / 51e-6, 1e-18);
+  EXPECT_NEAR(law.elastic_limit_m(), 51e-9, 1e-21);
+  EXPECT_DOUBLE_EQ(law.tension_N(20e-9, 20e-9), 20e-6);  // elastic: k delta
+  EXPECT_DOUBLE_EQ(law.tension_N(-1e-6, 0.0), -1e-3);    // closing: elastic, no damage
+  EXPECT_NEAR(law.tension_N(51e-9, 51e-9), f_max, 1e-18);
+  // Half-way down the softening branch the bond carries half its peak force.
+  const double half_way = 0.5 * (law.elastic_limit_m() + law.break_opening_m);
+  EXPECT_NEAR(law.tension_N(half_way, half_way), 0.5 * f_max, 1e-15);
+  // Damage is kept: closed to half its peak opening, it pulls with half the envelope's force.
+  EXPECT_NEAR(law.tension_N(0.5 * half_way, half_way), 0.25 * f_max, 1e-15);
+  EXPECT_FALSE(law.separated(0.999 * law.break_opening_m));
+  EXPECT_TRUE(law.separated(law.break_opening_m));
+  // Work done opening the bond monotonically to delta_f: G_f a_w (trapezoids on a fine grid).
+  double work = 0, previous = 0;
+  const int n = 200000;
+  for (int i = 1; i <= n; ++i) {
+    const double d = law.break_opening_m * i / n;
+    const double f = law.tension_N(d, d);
+    work += 0.5 * (f + previous) * law.break_opening_m / n;
+    previous = f;
+  }
+  EXPECT_NEAR(work, 1.0 * a_w, 1e-4 * a_w);
+}
+
+TEST(LamellaLaw, ABondThatSoftensPullsBothWallsEquallyAndSeparatesAtItsBreakOpening) {
+  // One bond at rest 6 um, opened step by step: the force on each end is equal and opposite; it
+  // stays intact up to delta_f and is gone beyond it.
+  CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
+  const std::vector<LamellaBond> bonds = {{0, 1, 6e-6}};
+  std::vector<char> intact = {1};
+  std::vector<double> peak = {0.0};
+  const PairList no_contact{{0, 0, 0}, {}, 0, 0};
+  Eigen::Matrix3Xd x = Eigen::Matrix3Xd::Zero(3, 2);
+  for (double opening : {0.02e-6, 0.3e-6, 0.6e-6, 0.99e-6}) {
+    x.col(1) = Eigen::Vector3d(0, 0, 6e-6 + opening);
+    Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 2);
+    EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0) << opening;
+    EXPECT_EQ(force.col(0), -force.col(1));
+    EXPECT_NEAR(force(2, 0), law.lamella.tension_N(opening, opening), 1e-18) << opening;
+    EXPECT_GT(force(2, 0), 0.0);  // pulls 0 toward 1 (+z)
+  }
+  x.col(1) = Eigen::Vector3d(0, 0, 7.01e-6);
+  Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 2);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 1);
+  EXPECT_EQ(intact[0], 0);
   EXPECT_EQ(force.norm(), 0.0);
 }
 

@@ -1,0 +1,41 @@
+#pragma once
+// The middle-lamella bond law (model.md §10): a bilinear cohesive law between two facing wall
+// particles, opening delta = r - l0. Elastic, F = k delta, up to the peak force F_max at
+// delta_0 = F_max / k; then softening linearly to zero at delta_f = 2 G_f a_w / F_max, so a bond that
+// separates has taken the fracture energy G_f of the wall area a_w it owns, and lets go gradually
+// instead of releasing its stretched spring at once. Damage is kept: a bond opened to delta_peak past
+// delta_0 pulls back along the secant F(delta_peak) delta / delta_peak. Closing (delta < 0) is elastic.
+// delta_f <= delta_0 (G_f = 0) is the brittle bond: it breaks when its tension exceeds F_max.
+#include <algorithm>
+
+namespace cellsim {
+
+struct LamellaLaw {
+  double stiffness_N_m = 0;    // k
+  double peak_force_N = 0;     // F_max = strength x a_w
+  double break_opening_m = 0;  // delta_f
+
+  double elastic_limit_m() const { return peak_force_N / stiffness_N_m; }  // delta_0
+
+  // Whether a bond that has opened as far as peak_opening_m is separated for good.
+  bool separated(double peak_opening_m) const {
+    return peak_opening_m > elastic_limit_m() && peak_opening_m >= break_opening_m;
+  }
+
+  // The tension (positive pulls the two particles together) at opening_m, for a bond whose largest
+  // opening so far is peak_opening_m (opening_m <= peak_opening_m).
+  double tension_N(double opening_m, double peak_opening_m) const {
+    const double elastic_limit = elastic_limit_m();
+    if (opening_m <= 0 || peak_opening_m <= elastic_limit) return stiffness_N_m * opening_m;
+    if (separated(peak_opening_m)) return 0.0;
+    const double envelope = peak_force_N * (break_opening_m - peak_opening_m) / (break_opening_m - elastic_limit);
+    return envelope * opening_m / peak_opening_m;
+  }
+};
+
+// delta_f for a fracture energy G_f [J/m^2] over the wall area a_w [m^2] a bond owns (above).
+inline double lamella_break_opening_m(double fracture_energy_J_m2, double wall_particle_area_m2, double peak_force_N) {
+  return peak_force_N > 0 ? 2.0 * fracture_energy_J_m2 * wall_particle_area_m2 / peak_force_N : 0.0;
+}
+
+}  // namespace cellsim
