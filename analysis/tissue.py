@@ -70,9 +70,11 @@ def write_page(path, config, frame, figure_files, target="tissue"):
     here = pathlib.Path(path).parent
     parts = ["<h1>Tissues: cells bonded by a middle lamella, dried and compressed</h1>",
              "<p>The paper's future work (docs/model.md §10). Each tissue is built of the paper's baseline cell, "
-             "faceted where it meets its neighbours and bonded to them through middle-lamella bonds that break "
-             "above a strength; every cell dries by Eq 11 through its own wall, and the tissue is compressed between "
-             "plates wider than it. Stress is the top-plate force over the footprint (the outline of all walls "
+             "faceted where it meets its neighbours and bonded to them through middle-lamella bonds that soften past "
+             "a peak strength and separate for good once they have taken their fracture energy; every cell dries "
+             "by Eq 11 through its own wall, and the tissue is compressed between plates wider than it. A tissue's "
+             "walls repel its fluid 3x harder than the single cell's (coupling.repulsion_f0_N_m): its bonded cells "
+             "reach several times the single cell's pressure. Stress is the top-plate force over the footprint (the outline of all walls "
              "seen from above) at the start of compression, for the tissues and the single cell alike; 'x single "
              "cell' is the tissue's stress over the single cell's at the same dryness and strain. The tissue's "
              "volume is the convex hull of its walls, its porosity the part of that hull outside every cell. "
