@@ -33,9 +33,12 @@ def figure_list(config, figure_files, here):
 
 
 def cell_text(value):
-    """A table cell's text: numbers to 4 significant digits, NaN as empty, names as they are."""
+    """A table cell's text: numbers to 4 significant digits, whole numbers (counts) in full, NaN as
+    empty, names as they are."""
     if isinstance(value, float):
-        return "" if value != value else f"{value:.4g}"
+        if value != value:
+            return ""
+        return f"{value:.0f}" if value.is_integer() and abs(value) < 1e15 else f"{value:.4g}"
     return html.escape(str(value))
 
 

@@ -275,3 +275,12 @@ def test_shrinkage_figure_draws_cells_tissues_and_reference_lines(config, root):
     assert list(tissue_line.get_ydata()) == pytest.approx([0.35 + 0.6 * x for x in (0.1, 0.5, 1.0)])
     ideal = [line for line in ax.get_lines() if line.get_label().startswith("volume lost")][0]
     assert list(ideal.get_xdata()) == [0, 1] and list(ideal.get_ydata()) == pytest.approx([0.1, 1.0])
+
+
+def test_table_cells_print_counts_in_full_and_measures_to_four_digits():
+    from analysis.report import cell_text
+    assert cell_text(13824.0) == "13824"  # a bond count, not 1.382e+04
+    assert cell_text(0.52604) == "0.526"
+    assert cell_text(189.5029) == "189.5"
+    assert cell_text(float("nan")) == ""
+    assert cell_text("a<b") == "a&lt;b"
