@@ -6,7 +6,6 @@
 // instead of releasing its stretched spring at once. Damage is kept: a bond opened to delta_peak past
 // delta_0 pulls back along the secant F(delta_peak) delta / delta_peak. Closing (delta < 0) is elastic.
 // delta_f <= delta_0 (G_f = 0) is the brittle bond: it breaks when its tension exceeds F_max.
-#include <algorithm>
 
 namespace cellsim {
 
