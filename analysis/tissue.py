@@ -74,8 +74,8 @@ def write_page(path, config, frame, figure_files, target="tissue"):
              "a peak strength and separate for good once they have taken their fracture energy; every cell dries "
              "by Eq 11 through its own wall, and the tissue is compressed between plates wider than it. A tissue's "
              "walls repel its fluid 3x harder than the single cell's (coupling.repulsion_f0_N_m): its bonded cells "
-             "reach several times the single cell's pressure. Stress is the top-plate force over the footprint (the outline of all walls "
-             "seen from above) at the start of compression, for the tissues and the single cell alike; 'x single "
+             "reach several times the single cell's pressure. Stress is the top-plate force over the footprint "
+             "(the outline of all walls seen from above) at the start of compression, for the tissues and the single cell alike; 'x single "
              "cell' is the tissue's stress over the single cell's at the same dryness and strain. The tissue's "
              "volume is the convex hull of its walls, its porosity the part of that hull outside every cell. "
              "Choices and their reasons: model closures, 'Tissue'.</p>"]

@@ -80,7 +80,8 @@ std::vector<ParamSpec> build_specs() {
            "repulsion between wall particles of different cells closer than the wall gap (Eq 22's form and k_pw)",
            "model.md §10"),
       real("tissue.lamella_stiffness_N_m", "N/m", 1.0, &P::lamella_stiffness_N_m, 1e3, 0, true, 1e9, true,
-           "middle-lamella bond between facing wall particles, a spring at its initial length", "model.md §10"),
+           "elastic stiffness of a middle-lamella bond between facing wall particles, about its initial length "
+           "(up to its peak tension)", "model.md §10"),
       real("tissue.lamella_strength_MPa", "MPa", 1e6, &P::lamella_strength_Pa, 1.5, 0, true, 1e4, true,
            "a middle-lamella bond's peak tension is this times the area a wall particle owns (pi D0^2 / N_w: "
            "51 uN for the default cell); past it the bond softens", "model.md §10"),
