@@ -85,7 +85,7 @@ std::vector<ParamSpec> build_specs() {
       real("tissue.lamella_strength_MPa", "MPa", 1e6, &P::lamella_strength_Pa, 1.5, 0, true, 1e4, true,
            "a middle-lamella bond's peak tension is this times the area a wall particle owns (pi D0^2 / N_w: "
            "51 uN for the default cell); past it the bond softens", "model.md §10"),
-      real("tissue.lamella_fracture_energy_J_m2", "J/m^2", 1.0, &P::lamella_fracture_energy_J_m2, 1.0, 0, true, 1e6,
+      real("tissue.lamella_fracture_energy_J_m2", "J/m^2", 1.0, &P::lamella_fracture_energy_J_m2, 5.0, 0, true, 1e6,
            true,
            "energy that separates a middle-lamella bond for good, per area a wall particle owns: the bond softens "
            "linearly from its peak to zero force over this (0: brittle, it breaks at its peak)",
