@@ -32,11 +32,13 @@ def draw(config, fig, runs, cases):
     lim = half * 1.05
     ax.set_xlim(-lim, lim), ax.set_ylim(-lim, lim), ax.set_zlim(-lim, lim)
     ax.set_xlabel("x [um]"), ax.set_ylabel("y [um]"), ax.set_zlabel("z [um]")
+    ax.tick_params(labelsize=7)  # the z label sits beside its tick labels, clear of them
     ax.set_title(f"(a) {len(snap['wall'])} wall particles ({len(tri)} triangles), {len(snap['fluid'])} fluid "
                  "particles; front half cut away", fontsize=8)
     ax2 = figure.add_subplot(1, 2, 2)
     draw_slice(ax2, snap, 2 * half * 1e-6)
     ax2.set_title("(b) mid-plane slice at the start of compression", fontsize=8)
     ax2.set_xlabel("x [um]"), ax2.set_ylabel("z [um]")
+    figure.subplots_adjust(wspace=0.3)
     figure.suptitle(spec["title"] + f" ({case.name})", fontsize=10)
     return figure
