@@ -3,7 +3,7 @@
 // microseconds, so a test can set up any state by hand and step it.
 #include <nlohmann/json.hpp>
 
-#include "case_file.hpp"
+#include "io/case_file.hpp"
 
 namespace cellsim::testing {
 

@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "cli_helpers.hpp"
-#include "phase_timer.hpp"
-#include "threads.hpp"
+#include "engine/phase_timer.hpp"
+#include "parallel/threads.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;

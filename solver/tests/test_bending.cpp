@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "bending.hpp"
-#include "hull.hpp"
+#include "geometry/hull.hpp"
+#include "physics/bending.hpp"
 
 using namespace cellsim;
 

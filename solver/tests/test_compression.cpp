@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cli_helpers.hpp"
-#include "h5.hpp"
+#include "io/h5.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;

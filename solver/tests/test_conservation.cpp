@@ -5,10 +5,10 @@
 
 #include <random>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
-#include "fluid_pairs.hpp"
-#include "simulation.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
+#include "physics/fluid_pairs.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;

@@ -1,8 +1,8 @@
 // The inside-the-wall test used at every record (model.md §4).
 #include <gtest/gtest.h>
 
-#include "containment.hpp"
-#include "hull.hpp"
+#include "geometry/containment.hpp"
+#include "geometry/hull.hpp"
 
 using namespace cellsim;
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "cli_helpers.hpp"
-#include "h5.hpp"
+#include "io/h5.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;

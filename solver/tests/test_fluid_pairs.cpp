@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "fluid_pairs.hpp"
-#include "threads.hpp"
+#include "parallel/threads.hpp"
+#include "physics/fluid_pairs.hpp"
 
 using namespace cellsim;
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <set>
 
-#include "case_file.hpp"
-#include "cell.hpp"
-#include "measures.hpp"
+#include "engine/measures.hpp"
+#include "geometry/cell.hpp"
+#include "io/case_file.hpp"
 
 using namespace cellsim;
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "kernel.hpp"
+#include "physics/kernel.hpp"
 
 using cellsim::CubicSplineKernel;
 

@@ -7,9 +7,9 @@
 
 #include <Eigen/Geometry>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
-#include "simulation.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;

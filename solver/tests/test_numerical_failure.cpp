@@ -5,11 +5,11 @@
 #include <cmath>
 #include <filesystem>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
 #include "cli_helpers.hpp"
-#include "errors.hpp"
-#include "simulation.hpp"
+#include "core/errors.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.hpp"
-#include "h5.hpp"
-#include "threads.hpp"
+#include "io/h5.hpp"
+#include "parallel/threads.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;

@@ -4,14 +4,14 @@
 
 #include <cmath>
 
-#include "drying.hpp"
-#include "eos.hpp"
-#include "fluid_pairs.hpp"
-#include "kernel.hpp"
-#include "lennard_jones.hpp"
-#include "neighbours.hpp"
-#include "mass_transfer.hpp"
-#include "wall_terms.hpp"
+#include "geometry/neighbours.hpp"
+#include "physics/drying.hpp"
+#include "physics/eos.hpp"
+#include "physics/fluid_pairs.hpp"
+#include "physics/kernel.hpp"
+#include "physics/lennard_jones.hpp"
+#include "physics/mass_transfer.hpp"
+#include "physics/wall_terms.hpp"
 
 using namespace cellsim;
 

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
-#include "simulation.hpp"
-#include "version.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
+#include "io/version.hpp"
 
 using namespace cellsim;
 

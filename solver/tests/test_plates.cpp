@@ -2,7 +2,7 @@
 // outside; the plates feel the reaction.
 #include <gtest/gtest.h>
 
-#include "plates.hpp"
+#include "physics/plates.hpp"
 
 using namespace cellsim;
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
-#include "pressure_closure.hpp"
-#include "simulation.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
+#include "physics/pressure_closure.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;

@@ -6,12 +6,12 @@
 
 #include <random>
 
-#include "case_file.hpp"
-#include "cell.hpp"
-#include "tissue.hpp"
-#include "pressure_coupling.hpp"
-#include "settle.hpp"
-#include "simulation.hpp"
+#include "engine/settle.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/cell.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
+#include "physics/pressure_coupling.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;

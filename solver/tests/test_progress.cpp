@@ -5,8 +5,8 @@
 #include <regex>
 #include <string>
 
+#include "cli/progress.hpp"
 #include "cli_helpers.hpp"
-#include "progress.hpp"
 
 using namespace cellsim;
 

@@ -5,10 +5,10 @@
 
 #include <cstdio>
 
-#include "case_file.hpp"
-#include "tissue.hpp"
-#include "settle.hpp"
-#include "simulation.hpp"
+#include "engine/settle.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
 
 using namespace cellsim;
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "case_file.hpp"
-#include "steady_state.hpp"
+#include "engine/steady_state.hpp"
+#include "io/case_file.hpp"
 
 using namespace cellsim;
 

@@ -5,17 +5,17 @@
 
 #include <random>
 
-#include "bending.hpp"
-#include "cell.hpp"
-#include "tissue.hpp"
-#include "fluid_pairs.hpp"
-#include "neighbours.hpp"
-#include "simulation.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/cell.hpp"
+#include "geometry/neighbours.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/tissue.hpp"
+#include "parallel/threads.hpp"
+#include "physics/bending.hpp"
+#include "physics/fluid_pairs.hpp"
+#include "physics/wall_bonds.hpp"
+#include "physics/wall_fluid.hpp"
 #include "small_cell.hpp"
-#include "surface.hpp"
-#include "threads.hpp"
-#include "wall_bonds.hpp"
-#include "wall_fluid.hpp"
 
 using namespace cellsim;
 

@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include "cell.hpp"
-#include "cell_contact.hpp"
-#include "containment.hpp"
-#include "errors.hpp"
-#include "simulation.hpp"
+#include "core/errors.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/cell.hpp"
+#include "geometry/containment.hpp"
+#include "geometry/tissue.hpp"
+#include "physics/cell_contact.hpp"
 #include "small_cell.hpp"
-#include "tissue.hpp"
 
 using namespace cellsim;
 using cellsim::testing::small_cell_case;

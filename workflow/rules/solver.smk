@@ -1,9 +1,11 @@
-# Builds cellsim with CMake (Release) when a source changes.
+# Builds cellsim with CMake (Release) when a source changes (every file under solver/src's layers).
+from pathlib import Path
+
 rule build_solver:
     input:
         "CMakeLists.txt",
         "solver/CMakeLists.txt",
-        expand("solver/src/{name}", name=sorted(glob_wildcards("solver/src/{name}").name)),
+        sorted(str(p) for p in Path("solver/src").rglob("*") if p.is_file()),
     output:
         SOLVER,
     log:

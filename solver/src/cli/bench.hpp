@@ -1,0 +1,48 @@
+#pragma once
+// `cellsim bench`: the speed of the step on a case, as the median of repeats, with the time per
+// phase; with --sizes, the same case at the convergence study's three resolution levels, on one
+// thread and on several.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/params.hpp"
+#include "engine/phase_timer.hpp"
+
+namespace cellsim {
+
+struct BenchOptions {
+  long steps = 2000;
+  int repeats = 5;
+  int threads = 1;
+};
+
+struct BenchResult {
+  long fluid_particles = 0, wall_particles = 0, steps = 0;
+  double dt_ns = 0;
+  int threads = 1;
+  std::vector<double> ms_per_step;                                        // per repeat
+  std::vector<std::array<double, static_cast<int>(Phase::Count)>> phase_ms;  // per repeat, per step
+  std::size_t fluid_pairs = 0, wall_pairs = 0, bonds = 0, hinges = 0;
+
+  // The repeat with the median time; its phases add up to its time (the medians of the phases of
+  // different repeats need not).
+  std::size_t median_repeat() const;
+  double median_ms() const { return ms_per_step[median_repeat()]; }
+  double million_particle_steps_per_s() const {
+    return static_cast<double>(fluid_particles + wall_particles) / median_ms() * 1e-3;
+  }
+};
+
+BenchResult measure_steps(const Params& p, long steps, int repeats, int threads);
+void print_benchmark(const BenchResult& r);
+
+// The resolution levels of the convergence study (config/config.yaml, axis `resolution`): level L
+// has 2^(3(L-1)/2) times the fluid particles and 2^(L-1) times the wall particles of the case; level
+// 3 also halves the time step. The overrides (for --set) that make level `level` of case p.
+std::vector<std::string> resolution_level_overrides(const Params& p, int level);
+
+// One row per (level, thread count), then the phases side by side.
+void print_size_table(const std::vector<int>& levels, const std::vector<BenchResult>& results);
+
+}  // namespace cellsim

@@ -1,0 +1,193 @@
+#include "engine/measures.hpp"
+
+#include "geometry/hull.hpp"
+#include "physics/plates.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+namespace cellsim {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Each cell's volume, mean pressure and fluid mass; a tissue's intact bonds, hull volume and porosity.
+void measure_cells(const State& s, const CellRanges& cells, const WallSurface& surface, const EquationOfState& eos,
+                   Record& r) {
+  const auto& f = s.fluid;
+  r.cell_volume_m3 = surface.cell_volume_m3;
+  for (int c = 0; c < cells.count(); ++c) {
+    double pressure_sum = 0;
+    for (Eigen::Index i = cells.fluid[c]; i < cells.fluid[c + 1]; ++i) pressure_sum += eos.pressure(f.rho[i]);
+    r.cell_mean_pressure_Pa.push_back(pressure_sum / static_cast<double>(cells.fluid_count(c)));
+    r.cell_fluid_mass_kg.push_back(f.m.segment(cells.fluid[c], cells.fluid_count(c)).sum());
+  }
+  r.lamella_intact = 0;
+  for (char intact : s.lamella_intact) r.lamella_intact += intact;
+  r.tissue_volume_m3 = r.porosity = kNaN;
+  if (cells.count() > 1) {
+    r.tissue_volume_m3 = convex_hull_volume(s.wall.x);
+    r.porosity = 1.0 - surface.volume_m3 / r.tissue_volume_m3;
+  }
+}
+}
+
+const std::vector<Quantity>& quantities() {
+  static const std::vector<Quantity> q = {
+      {"time_s", "s", "simulated time since the start of drying", &Record::time_s},
+      {"stage", "1", "0 drying, 1 compression", &Record::stage},
+      {"step", "1", "time steps done since the start of drying", &Record::step},
+      {"fluid_mass_kg", "kg", "total fluid mass (changes by Eq 11)", &Record::fluid_mass_kg},
+      {"fluid_mass_ratio", "1", "M_f / M_f0, achieved moisture ratio", &Record::fluid_mass_ratio},
+      {"mean_pressure_Pa", "Pa", "arithmetic mean of the fluid particles' EOS pressure (Eq 7)",
+       &Record::mean_pressure_Pa},
+      {"area_m2", "m^2", "wall area: sum of the wall triangles' areas", &Record::area_m2},
+      {"volume_m3", "m^3", "enclosed volume: sum of signed tetrahedra (origin, triangle)", &Record::volume_m3},
+      {"equivalent_diameter_m", "m", "diameter of the sphere of the enclosed volume (D in Eq 6)",
+       &Record::equivalent_diameter_m},
+      {"smoothing_length_m", "m", "SPH smoothing length h (Eq 6)", &Record::smoothing_length_m},
+      {"cell_height_m", "m", "H: max z - min z of the wall particles", &Record::cell_height_m},
+      {"equatorial_radius_m", "m", "largest horizontal distance of a wall particle from the wall centroid's axis",
+       &Record::equatorial_radius_m},
+      {"kinetic_energy_fluid_J", "J", "sum of m v^2 / 2 over fluid particles", &Record::kinetic_energy_fluid_J},
+      {"max_fluid_speed_m_s", "m/s", "speed of the fastest fluid particle", &Record::max_fluid_speed_m_s},
+      {"kinetic_energy_wall_J", "J", "sum of m v^2 / 2 over wall particles", &Record::kinetic_energy_wall_J},
+      {"wall_strain_mean", "1", "mean bond strain (l - l0) / l0", &Record::wall_strain_mean},
+      {"wall_tension_N_m", "N/m", "mean wall tension: sum over bonds of tension x length / (2 x wall area)",
+       &Record::wall_tension_N_m},
+      {"wall_pressure_Pa", "Pa", "pressure the wall carries: outward LJ push along the vertex normals / wall area",
+       &Record::wall_pressure_Pa},
+      {"plate_top_z_m", "m", "height of the top plate (NaN before compression)", &Record::plate_top_z_m},
+      {"plate_bottom_z_m", "m", "height of the bottom plate (NaN before compression)", &Record::plate_bottom_z_m},
+      {"plate_force_top_N", "N", "force of the wall on the top plate, upward positive (Eq 22 reaction)",
+       &Record::plate_force_top_N},
+      {"plate_force_bottom_N", "N", "force of the wall on the bottom plate, downward positive",
+       &Record::plate_force_bottom_N},
+      {"contact_area_m2", "m^2", "area (a third of each adjacent triangle) of wall particles within r_pw of a plate",
+       &Record::contact_area_m2},
+      {"contact_count", "1", "wall particles within r_pw of a plate", &Record::contact_count},
+      {"contact_area_top_m2", "m^2", "contact area of the top plate alone (its wall particles' owned area)",
+       &Record::contact_area_top_m2},
+      {"pressure_load_N", "N", "mean fluid pressure x top contact area: the load a pressurised membrane would carry",
+       &Record::pressure_load_N},
+      {"load_fluid_N", "N", "upward force of the fluid (wall-fluid coupling) on the wall particles touching the top plate",
+       &Record::load_fluid_N},
+      {"load_wall_N", "N", "upward force of the wall itself (bonds, bending, damping) on the wall particles touching the top plate",
+       &Record::load_wall_N},
+      {"nominal_strain", "1", "(H_c - H) / H_c, H_c the cell height when compression starts",
+       &Record::nominal_strain},
+      {"plate_strain", "1", "top-plate travel since first contact / H_c", &Record::plate_strain},
+      {"plate_stress_Pa", "Pa", "F_top / (plate length x width)", &Record::plate_stress_Pa},
+      {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
+      {"contact_stress_Pa", "Pa", "F_top / top contact area (NaN without contact)", &Record::contact_stress_Pa},
+      {"footprint_stress_Pa", "Pa",
+       "F_top / the footprint: the area of the wall's outline seen from above when compression starts (a tissue's stress)",
+       &Record::footprint_stress_Pa},
+      {"lamella_intact", "1", "middle-lamella bonds between cells not yet broken (0 for one cell)",
+       &Record::lamella_intact},
+      {"tissue_volume_m3", "m^3", "volume of the convex hull of every wall particle (a tissue's; NaN for one cell)",
+       &Record::tissue_volume_m3},
+      {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
+       &Record::porosity},
+  };
+  return q;
+}
+
+const std::vector<CellQuantity>& cell_quantities() {
+  static const std::vector<CellQuantity> q = {
+      {"volume_m3", "m^3", "each cell's enclosed volume (its own wall's signed tetrahedra)", &Record::cell_volume_m3},
+      {"mean_pressure_Pa", "Pa", "each cell's mean fluid EOS pressure (Eq 7)", &Record::cell_mean_pressure_Pa},
+      {"fluid_mass_kg", "kg", "each cell's fluid mass (Eq 11)", &Record::cell_fluid_mass_kg},
+  };
+  return q;
+}
+
+double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
+
+Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
+               const Params& p, const EquationOfState& eos, const LoadPartition& load) {
+  Record r{};
+  measure_cells(s, cells, surface, eos, r);
+  const auto& f = s.fluid;
+  const auto& w = s.wall;
+  r.time_s = s.time_s;
+  r.stage = static_cast<double>(s.stage);
+  r.step = static_cast<double>(s.step);
+  r.fluid_mass_kg = f.m.sum();
+  r.fluid_mass_ratio = r.fluid_mass_kg / s.initial_fluid_mass_kg;
+  r.max_fluid_speed_m_s = std::sqrt(f.v.colwise().squaredNorm().maxCoeff());
+  double pressure_sum = 0;
+  for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
+  r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;
+  r.area_m2 = surface.area_m2;
+  r.volume_m3 = surface.volume_m3;
+  r.equivalent_diameter_m = equivalent_diameter_m(r.volume_m3);
+  r.smoothing_length_m = s.smoothing_length_m;
+  r.cell_height_m = cell_height_m(w.x);
+  const Eigen::Vector3d centroid = w.x.rowwise().mean();
+  r.equatorial_radius_m = (w.x.topRows<2>().colwise() - centroid.head<2>()).colwise().norm().maxCoeff();
+  r.kinetic_energy_fluid_J = 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
+  r.kinetic_energy_wall_J = 0.5 * w.mass_kg * w.v.squaredNorm();
+  double strain_sum = 0;
+  for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
+    const double l = (w.x.col(mesh.bonds[b][0]) - w.x.col(mesh.bonds[b][1])).norm();
+    strain_sum += (l - mesh.rest_length_m[b]) / mesh.rest_length_m[b];
+  }
+  r.wall_tension_N_m = s.wall_tension_N_m;
+  r.wall_pressure_Pa = s.wall_pressure_Pa;
+  r.wall_strain_mean = mesh.bonds.empty() ? 0.0 : strain_sum / static_cast<double>(mesh.bonds.size());
+
+  const Plates& pl = s.plates;
+  if (!pl.active) {
+    r.plate_top_z_m = r.plate_bottom_z_m = r.plate_force_top_N = r.plate_force_bottom_N = kNaN;
+    r.contact_area_m2 = r.contact_count = r.contact_area_top_m2 = kNaN;
+    r.pressure_load_N = r.load_fluid_N = r.load_wall_N = kNaN;
+    r.nominal_strain = r.plate_strain = r.plate_stress_Pa = r.section_stress_Pa = r.contact_stress_Pa = kNaN;
+    r.footprint_stress_Pa = kNaN;
+    return r;
+  }
+  r.plate_top_z_m = pl.top_z_m;
+  r.plate_bottom_z_m = pl.bottom_z_m;
+  r.plate_force_top_N = pl.force_top_N;
+  r.plate_force_bottom_N = pl.force_bottom_N;
+  // Contact area: the area owned by the wall particles that Eq 22 pushes (plates.hpp decides).
+  const Eigen::VectorXd vertex_area = surface.vertex_areas(mesh);
+  const PlateLaw law = plate_law(p);
+  double contact_area = 0, contact_area_top = 0;
+  int contacts = 0;
+  for (Eigen::Index k = 0; k < w.size(); ++k) {
+    const PlateOverlap overlap = plate_overlap(w.x.col(k), law, pl);
+    if (!overlap.touches()) continue;
+    contact_area += vertex_area[k];
+    ++contacts;
+    if (overlap.top_m > 0) contact_area_top += vertex_area[k];
+  }
+  r.contact_area_m2 = contact_area;
+  r.contact_count = contacts;
+  const double hc = pl.contact_height_m;
+  r.nominal_strain = nominal_strain(hc, r.cell_height_m);
+  r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
+  r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
+  r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
+  r.footprint_stress_Pa = pl.force_top_N / pl.footprint_m2;
+  r.contact_area_top_m2 = contact_area_top;
+  r.pressure_load_N = r.mean_pressure_Pa * contact_area_top;
+  r.load_fluid_N = load.fluid_push_N;
+  r.load_wall_N = load.wall_push_N;
+  // The top plate's force over the top plate's own contact (the bottom one carries the same load).
+  r.contact_stress_Pa = contact_area_top > 0 ? pl.force_top_N / contact_area_top : kNaN;
+  return r;
+}
+
+std::string output_reference_markdown() {
+  std::ostringstream s;
+  s << "| dataset | unit | definition |\n|---|---|---|\n";
+  for (const auto& q : quantities()) s << "| `/timeseries/" << q.name << "` | " << q.unit << " | " << q.definition << " |\n";
+  for (const auto& q : cell_quantities())
+    s << "| `/cells/" << q.name << "` | " << q.unit << " | " << q.definition << ", records x cells |\n";
+  return s.str();
+}
+
+}  // namespace cellsim

@@ -1,0 +1,63 @@
+#pragma once
+// What is measured every record (model.md §8): one struct, and one table that names each
+// quantity with its unit and definition for the output file and docs/output-reference.md.
+#include <string>
+#include <vector>
+
+#include "core/params.hpp"
+#include "core/state.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/tissue.hpp"
+#include "geometry/wall_mesh.hpp"
+#include "physics/eos.hpp"
+#include "physics/load_partition.hpp"
+
+namespace cellsim {
+
+struct Record {
+  double time_s, stage, step;
+  double fluid_mass_kg, fluid_mass_ratio, mean_pressure_Pa;
+  double area_m2, volume_m3, equivalent_diameter_m, smoothing_length_m;
+  double cell_height_m, equatorial_radius_m;
+  double max_fluid_speed_m_s, kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
+  double wall_tension_N_m, wall_pressure_Pa;
+  double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
+  double contact_area_m2, contact_count, contact_area_top_m2;
+  double pressure_load_N, load_fluid_N, load_wall_N;
+  double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa, footprint_stress_Pa;
+  double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
+  // Each cell's (model.md §10), in cell order.
+  std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;
+};
+
+struct Quantity {
+  std::string name;  // dataset name under /timeseries
+  std::string unit;
+  std::string definition;
+  double Record::*member;
+};
+const std::vector<Quantity>& quantities();
+
+// The per-cell series: one value per cell in each record (written as records x cells).
+struct CellQuantity {
+  std::string name;  // dataset name under /cells
+  std::string unit;
+  std::string definition;
+  std::vector<double> Record::*member;
+};
+const std::vector<CellQuantity>& cell_quantities();
+
+// H: max z - min z of the wall particles; the nominal strain (H_c - H) / H_c (model.md §8).
+double cell_height_m(const Eigen::Matrix3Xd& wall_x);
+inline double nominal_strain(double contact_height_m, double height_m) {
+  return (contact_height_m - height_m) / contact_height_m;
+}
+
+// The record of state s; area, volume and normals come from its wall surface (surface.hpp), the
+// top plate's load partition from the forces of the last step (load_partition.hpp).
+Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
+               const Params& p, const EquationOfState& eos, const LoadPartition& load);
+
+std::string output_reference_markdown();
+
+}  // namespace cellsim

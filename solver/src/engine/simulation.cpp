@@ -1,0 +1,533 @@
+#include "engine/simulation.hpp"
+
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "geometry/containment.hpp"
+#include "geometry/hull.hpp"
+#include "parallel/cell_blocks.hpp"
+#include "parallel/threads.hpp"
+#include "physics/drying.hpp"
+#include "physics/mass_transfer.hpp"
+#include "physics/plates.hpp"
+#include "physics/pressure_closure.hpp"
+#include "physics/pressure_coupling.hpp"
+#include "physics/wall_fluid.hpp"
+#include "physics/wall_terms.hpp"
+
+namespace cellsim {
+namespace {
+
+// Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
+constexpr double kSkinOverH0 = 0.15;
+
+// A wall particle of a tissue faces at most about this many particles of a neighbour's wall within the
+// wall gap (the layers are one gap apart, their particles about one gap apart within each layer).
+constexpr double kContactPartners = 3;
+
+// The middle-lamella law from the case (lamella_law.hpp). A fracture energy too small to reach past
+// the elastic limit (G_f < F_max delta_0 / (2 a_w)) would soften over a negative distance: refused.
+LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
+  LamellaLaw law;
+  law.stiffness_N_m = p.lamella_stiffness_N_m;
+  law.peak_force_N = p.lamella_strength_Pa * wall_particle_area_m2;
+  law.break_opening_m =
+      lamella_break_opening_m(p.lamella_fracture_energy_J_m2, wall_particle_area_m2, law.peak_force_N);
+  if (p.lamella_fracture_energy_J_m2 > 0 && law.peak_force_N > 0 && law.break_opening_m <= law.elastic_limit_m()) {
+    const double least = law.peak_force_N * law.elastic_limit_m() / (2.0 * wall_particle_area_m2);
+    std::ostringstream msg;
+    msg << "tissue.lamella_fracture_energy_J_m2 = " << p.lamella_fracture_energy_J_m2
+        << " is less than the elastic energy a bond holds at its peak tension (" << least
+        << " J/m^2 with this strength and stiffness): give more, or 0 for a brittle bond";
+    throw InputError(msg.str());
+  }
+  return law;
+}
+
+// Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
+double wall_spring_limit(const WallMesh& mesh, const std::vector<LamellaBond>& lamella, const Params& p,
+                         double wall_mass, long n_wall) {
+  const double contact = lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m;
+  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), contact);
+  const double k_bond = p.contraction_stiffness_N_m + 2.0 * p.G_Pa * p.thickness_m / std::sqrt(3.0);
+  for (const auto& b : mesh.bonds) {
+    k_sum[static_cast<std::size_t>(b[0])] += k_bond;
+    k_sum[static_cast<std::size_t>(b[1])] += k_bond;
+  }
+  for (const auto& b : lamella) {
+    k_sum[static_cast<std::size_t>(b.a)] += p.lamella_stiffness_N_m;
+    k_sum[static_cast<std::size_t>(b.b)] += p.lamella_stiffness_N_m;
+  }
+  double k_max = p.plate_stiffness_N_m;
+  for (double k : k_sum) k_max = std::max(k_max, k + p.plate_stiffness_N_m);
+  return 2.0 / std::sqrt(2.0 * k_max / wall_mass);
+}
+
+// The state checks run on every step, so the common case is one packed pass per array; the particle
+// at fault is looked up only on failure. a - a is 0 for a finite entry and NaN otherwise, so the sum
+// of a - a is exactly 0 iff every entry is finite (and cannot overflow, unlike the sum of a).
+template <class Derived>
+bool all_finite(const Eigen::DenseBase<Derived>& a) {
+  return (a.derived().array() - a.derived().array()).sum() == 0.0;
+}
+
+// The per-particle loops of a step, for particles [begin, end) (one block of for_blocks). Functions
+// of their own, with the scalars as value parameters: inside a lambda that other threads also run,
+// the compiler would re-read them after every store and not vectorise.
+
+// Eq 11 for the fluid particles [begin, end) of a cell of n fluid particles and wall area area_m2,
+// and their share of the density rate (Eq 9).
+void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double area_m2, int n, double Lp_m_per_s_Pa,
+                double osmotic_Pa, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& dm_dt,
+                Eigen::VectorXd& drho_dt) {
+  for (Eigen::Index i = begin; i < end; ++i) {
+    dm_dt[i] = mass_rate(area_m2, Lp_m_per_s_Pa, f.rho[i], n, pressure[i], osmotic_Pa);
+    drho_dt[i] = density_rate(drho_dt[i], f.rho[i], f.m[i], dm_dt[i]);
+  }
+}
+
+// Half a kick of the fluid: velocity by force / mass, density and mass by their rates.
+void kick_fluid(double half_dt, const Eigen::Matrix3Xd& force, const Eigen::VectorXd& drho_dt,
+                const Eigen::VectorXd& dm_dt, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& kick_factor,
+                FluidParticles& f) {
+  const Eigen::Index count = end - begin;
+  kick_factor.segment(begin, count) = half_dt / f.m.segment(begin, count).array();  // packed divisions
+  for (Eigen::Index i = begin; i < end; ++i) f.v.col(i) += kick_factor[i] * force.col(i);
+  f.rho.segment(begin, count) += half_dt * drho_dt.segment(begin, count);
+  f.m.segment(begin, count) += half_dt * dm_dt.segment(begin, count);
+}
+
+// y *= factor, for entries [begin, end).
+void scale(double factor, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& y) {
+  y.segment(begin, end - begin) *= factor;
+}
+
+// y += factor * rate, for columns [begin, end) (a wall kick, or a drift).
+void add_scaled(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
+  y.middleCols(begin, end - begin) += factor * rate.middleCols(begin, end - begin);
+}
+
+// The fastest fluid particle and the one with the largest acceleration (squared), for the CFL limits.
+struct Fastest {
+  double v2 = 0, a2 = 0;
+  Eigen::Index i_v = 0, i_a = 0;
+  // Folds a later block in: the first particle wins a tie, as in one pass.
+  Fastest faster(const Fastest& later) const {
+    Fastest f = *this;
+    if (later.v2 > f.v2) f.v2 = later.v2, f.i_v = later.i_v;
+    if (later.a2 > f.a2) f.a2 = later.a2, f.i_a = later.i_a;
+    return f;
+  }
+};
+
+Fastest fastest_fluid(const FluidParticles& f, const Eigen::Matrix3Xd& force, Eigen::Index begin, Eigen::Index end) {
+  Fastest r;
+  r.i_v = r.i_a = begin;
+  for (Eigen::Index i = begin; i < end; ++i) {
+    const double v2 = f.v.col(i).squaredNorm();
+    const double a2 = force.col(i).squaredNorm() / (f.m[i] * f.m[i]);
+    if (v2 > r.v2) r.v2 = v2, r.i_v = i;
+    if (a2 > r.a2) r.a2 = a2, r.i_a = i;
+  }
+  return r;
+}
+
+// True if every position, velocity, density and mass of particles [begin, end) is finite, and every
+// density and mass positive (one packed pass per array: see all_finite).
+bool fluid_is_sound(const FluidParticles& f, Eigen::Index begin, Eigen::Index end) {
+  const Eigen::Index count = end - begin;
+  return all_finite(f.x.middleCols(begin, count)) && all_finite(f.v.middleCols(begin, count)) &&
+         all_finite(f.rho.segment(begin, count)) && all_finite(f.m.segment(begin, count)) &&
+         f.rho.segment(begin, count).minCoeff() > 0 && f.m.segment(begin, count).minCoeff() > 0;
+}
+
+bool wall_is_finite(const WallParticles& w, Eigen::Index begin, Eigen::Index end) {
+  return all_finite(w.x.middleCols(begin, end - begin)) && all_finite(w.v.middleCols(begin, end - begin));
+}
+
+// Adds the coupling's forces on wall particles [begin, end) to their forces, and returns the sum of
+// their push along their unit normals (packed norms and divisions), for the wall pressure.
+double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& vertex_normal, Eigen::Index begin,
+                    Eigen::Index end, Eigen::Matrix3Xd& wall_force) {
+  const Eigen::Index count = end - begin;
+  wall_force.middleCols(begin, count) += on_wall.middleCols(begin, count);
+  return (on_wall.middleCols(begin, count).cwiseProduct(vertex_normal.middleCols(begin, count)).colwise().sum().array() /
+          vertex_normal.middleCols(begin, count).colwise().norm().array())
+      .sum();
+}
+
+}  // namespace
+
+Simulation::Simulation(const Params& p, const Tissue& tissue)
+    : p_(p),
+      mesh_(tissue.mesh),
+      cells_(tissue.cells),
+      lamella_(tissue.lamella),
+      contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m,
+                   lamella_law(p, tissue.wall_particle_area_m2)},
+      bending_(mesh_, p.bending_stiffness_J),
+      neighbours_(kSkinOverH0 * *p.h0_m),
+      lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
+      plate_law_(plate_law(p)),
+      bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
+      Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
+  s_.fluid.x = tissue.fluid_x;
+  s_.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
+  s_.fluid.m = tissue.fluid_mass_kg;
+  s_.fluid.rho = Eigen::VectorXd::Constant(tissue.fluid_x.cols(), p.fluid_density_kg_m3);
+  s_.wall.x = tissue.wall_x;
+  s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
+  s_.wall.mass_kg = tissue.wall_mass_kg;
+  s_.lamella_intact.assign(lamella_.size(), 1);
+  s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
+  if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
+  s_.smoothing_length_m = *p.h0_m;
+  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.plates.first_contact_top_z_m = std::nan("");
+  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
+  if (p_.dt_s > wall_spring_dt_limit_s_) {  // known before the first step: bad input, not a blow-up
+    std::ostringstream msg;
+    msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
+        << wall_spring_dt_limit_s_ * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
+    throw InputError(msg.str());
+  }
+  // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
+  s_.reference_diameter_m = equivalent_diameter_m(wall_surface(tissue.wall_x, mesh_).volume_m3);
+  compute_rates();
+}
+
+void Simulation::set_threads(int threads) {
+  check_thread_count(threads);
+  threads_ = threads;
+}
+
+double Simulation::turgor_Pa() const {
+  if (s_.stage != Stage::Drying) return p_.turgor_Pa * p_.dryness;
+  return drying::turgor_Pa(p_.turgor_Pa, p_.dryness, drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s));
+}
+
+EquationOfState Simulation::eos() const {
+  return {turgor_Pa(), p_.bulk_modulus_Pa, p_.fluid_density_kg_m3, p_.eos_exponent};
+}
+
+void Simulation::step() {
+  timer_.start();
+  check_time_step();
+  kick(0.5 * p_.dt_s);
+  drift(p_.dt_s);
+  timer_.lap(Phase::Integration);
+  compute_rates();
+  kick(0.5 * p_.dt_s);
+  if (s_.stage == Stage::Drying) apply_pressure_closure();
+  ++s_.step;
+  ++s_.stage_step;
+  check_state();
+  timer_.lap(Phase::Integration);
+}
+
+// Forces and rates at the current positions, in the order of the model.
+void Simulation::compute_rates() {
+  update_geometry();
+  timer_.lap(Phase::Geometry);
+  fluid_terms();
+  mass_transfer();
+  timer_.lap(Phase::MassTransfer);
+  wall_force_.resize(3, s_.wall.size());
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    wall_force_.middleCols(begin, end - begin).setZero();
+  });
+  wall_terms();
+  cell_contact_terms();
+  wall_fluid_terms();
+  timer_.lap(Phase::WallFluid);
+  plate_terms();
+  timer_.lap(Phase::Plates);
+}
+
+// The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0, D of
+// the volume of all cells (one h for a tissue: model.md §10). A wall that encloses no volume has
+// collapsed or turned inside out: Eq 6 has no D, so the run stops here (a non-finite volume comes from
+// a non-finite position, which check_state names).
+void Simulation::update_geometry() {
+  surface_.update(s_.wall.x, mesh_, threads_);
+  if (surface_.volume_m3 <= 0) {
+    std::ostringstream msg;
+    msg << where() << ": the wall encloses a volume of " << surface_.volume_m3
+        << " m^3 (it must be positive: the wall has collapsed or turned inside out)";
+    throw NumericalFailure(msg.str());
+  }
+  s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
+  // The wall-fluid pair list's cut-off (either coupling): the kernel's support, or LJ's r_c.
+  lj_.cutoff_m = p_.coupling_model == kPressure ? 2.0 * s_.smoothing_length_m
+                                                : std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
+}
+
+// Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
+void Simulation::fluid_terms() {
+  const CubicSplineKernel kernel(s_.smoothing_length_m);
+  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_);
+  timer_.lap(Phase::Neighbours);
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
+  timer_.lap(Phase::FluidPairs);
+}
+
+// Eq 11 for every fluid particle, through its own cell's wall, and its share of the density rate (Eq 9).
+void Simulation::mass_transfer() {
+  dm_dt_.resize(s_.fluid.size());
+  const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
+  for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
+    mass_rates(s_.fluid, fluid_.pressure, surface_.cell_area_m2[c], static_cast<int>(cells_.fluid_count(c)),
+               Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_, fluid_.drho_dt);
+  });
+}
+
+// Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
+void Simulation::wall_terms() {
+  const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
+  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, threads_, wall_force_, bond_scratch_);
+  s_.wall_tension_N_m = tension_length / (2.0 * surface_.area_m2);
+  timer_.lap(Phase::WallBonds);
+  bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
+  timer_.lap(Phase::Bending);
+}
+
+// Contact and middle lamella between the walls of different cells (cell_contact.hpp); none for one cell.
+void Simulation::cell_contact_terms() {
+  if (cells_.count() == 1) return;
+  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.lamella_intact,
+                          s_.lamella_peak_opening_m, wall_force_);
+  timer_.lap(Phase::CellContact);
+}
+
+// The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
+// push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
+void Simulation::wall_fluid_terms() {
+  if (p_.coupling_model == kPressure) {
+    pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal, neighbours_.fluid_wall(),
+                             CubicSplineKernel(s_.smoothing_length_m), threads_, pressure_coupling_scratch_, fluid_.force,
+                             fluid_.drho_dt, coupling_on_wall_);
+  } else {
+    wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, threads_, fluid_.force, coupling_on_wall_,
+                      lj_scratch_);
+  }
+  const std::vector<double> outward = sum_by_cell(threads_, cells_.wall, [&](Eigen::Index begin, Eigen::Index end) {
+    return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
+  });
+  cell_wall_pressure_Pa_.resize(outward.size());
+  double outward_sum = 0;
+  for (std::size_t c = 0; c < outward.size(); ++c) {
+    cell_wall_pressure_Pa_[c] = outward[c] / surface_.cell_area_m2[c];
+    outward_sum += outward[c];
+  }
+  s_.wall_pressure_Pa = outward_sum / surface_.area_m2;
+}
+
+std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
+  std::vector<double> mean(static_cast<std::size_t>(cells_.count()));
+  for (int c = 0; c < cells_.count(); ++c)
+    mean[c] = fluid_.pressure.segment(cells_.fluid[c], cells_.fluid_count(c)).mean();
+  return mean;
+}
+
+// Eq 22 during compression; the first contact of the top plate starts the plate strain.
+void Simulation::plate_terms() {
+  Plates& plates = s_.plates;
+  if (!plates.active) return;
+  add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
+  if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
+}
+
+void Simulation::kick(double half_dt) {
+  kick_factor_.resize(s_.fluid.size());
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, begin, end, kick_factor_, s_.fluid);
+  });
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
+  });
+}
+
+void Simulation::drift(double dt) {
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    add_scaled(dt, s_.fluid.v, begin, end, s_.fluid.x);
+  });
+  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    add_scaled(dt, s_.wall.v, begin, end, s_.wall.x);
+  });
+  s_.time_s += dt;
+  Plates& plates = s_.plates;
+  if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
+}
+
+// The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
+void Simulation::apply_pressure_closure() {
+  const Eigen::VectorXd& P = fluid_.pressure;
+  const std::vector<double> pressure_sum = sum_by_cell(
+      threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) { return P.segment(begin, end - begin).sum(); });
+  std::vector<double> factor(pressure_sum.size());
+  bool any = false;
+  for (int c = 0; c < cells_.count(); ++c) {
+    const double mean_pressure = pressure_sum[c] / static_cast<double>(cells_.fluid_count(c));
+    factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], mean_pressure, p_.dt_s, p_.pressure_closure_time_s);
+    any = any || factor[c] != 1.0;
+  }
+  if (any)
+    for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
+      scale(factor[c], begin, end, s_.fluid.m);
+    });
+}
+
+void Simulation::start_at_rest() {
+  s_.fluid.v.setZero();
+  s_.wall.v.setZero();
+  s_.time_s = 0;
+  s_.step = s_.stage_step = 0;
+  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.reference_diameter_m = equivalent_diameter_m(surface_.volume_m3);
+  neighbours_.invalidate();
+  compute_rates();
+}
+
+std::string Simulation::where() const {
+  std::ostringstream s;
+  s << "step " << s_.step << " (t = " << s_.time_s * 1e6 << " us, "
+    << (s_.stage == Stage::Drying ? "drying" : "compression") << ")";
+  return s.str();
+}
+
+void Simulation::check_state() const {
+  const auto both = [](bool a, bool b) { return a && b; };
+  const bool fluid_sound = reduce_blocks<bool>(
+      threads_, s_.fluid.size(), [&](Eigen::Index b, Eigen::Index e) { return fluid_is_sound(s_.fluid, b, e); }, both);
+  const bool wall_finite = reduce_blocks<bool>(
+      threads_, s_.wall.size(), [&](Eigen::Index b, Eigen::Index e) { return wall_is_finite(s_.wall, b, e); }, both);
+  if (fluid_sound && wall_finite) return;
+  // Something is wrong: find the first particle at fault, in the order of the quantities.
+  const auto report = [&](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) {
+    for (Eigen::Index i = 0; i < m.cols(); ++i)
+      if (!m.col(i).allFinite())
+        throw NumericalFailure(where() + ": " + kind + " particle " + std::to_string(i) + " has a non-finite " +
+                               quantity);
+  };
+  report("fluid", s_.fluid.x, "position");
+  report("fluid", s_.fluid.v, "velocity");
+  report("wall", s_.wall.x, "position");
+  report("wall", s_.wall.v, "velocity");
+  const auto& f = s_.fluid;
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    if (!std::isfinite(f.rho[i]) || !(f.rho[i] > 0) || !std::isfinite(f.m[i]) || !(f.m[i] > 0)) {
+      std::ostringstream msg;
+      msg << where() << ": fluid particle " << i << " has density " << f.rho[i] << " kg/m^3 and mass " << f.m[i]
+          << " kg (both must be positive and finite)";
+      throw NumericalFailure(msg.str());
+    }
+}
+
+// model.md §7: dt must stay under the CFL limits (the constant wall-spring limit is checked once,
+// in the constructor). Squared speeds and accelerations are compared (one square root each), and a
+// message is composed only on failure.
+void Simulation::check_time_step() const {
+  const double h = s_.smoothing_length_m;
+  const double c0 = eos().sound_speed_m_s();
+  const Fastest fastest = reduce_blocks<Fastest>(
+      threads_, s_.fluid.size(),
+      [&](Eigen::Index begin, Eigen::Index end) { return fastest_fluid(s_.fluid, fluid_.force, begin, end); },
+      [](const Fastest& a, const Fastest& b) { return a.faster(b); });
+  const double v2_max = fastest.v2, a2_max = fastest.a2;
+  const Eigen::Index i_v = fastest.i_v, i_a = fastest.i_a;
+  const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
+  const double sound_limit = 0.25 * h / (c0 + v_max);
+  const double viscous_limit =
+      p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY;
+  const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
+  const double dt = p_.dt_s;
+  const auto fail = [&](double limit, const std::string& what) {
+    std::ostringstream msg;
+    msg << where() << ": time step " << dt * 1e9 << " ns exceeds " << what << " (" << limit * 1e9
+        << " ns); reduce time.dt_ns";
+    throw NumericalFailure(msg.str());
+  };
+  if (dt > sound_limit)
+    fail(sound_limit, "the sound-speed CFL limit 0.25 h / (c0 + |v|max), |v|max = " + std::to_string(v_max) +
+                          " m/s at fluid particle " + std::to_string(i_v));
+  if (dt > viscous_limit) fail(viscous_limit, "the viscous limit 0.125 h^2 rho0 / mu");
+  if (dt > acceleration_limit)
+    fail(acceleration_limit, "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
+                                 " m/s^2 at fluid particle " + std::to_string(i_a));
+}
+
+void Simulation::check_containment() const {
+  const auto at = [](const Eigen::Vector3d& x) {
+    std::ostringstream s;
+    s << "(" << x.x() * 1e6 << ", " << x.y() * 1e6 << ", " << x.z() * 1e6 << ") um";
+    return s.str();
+  };
+  const bool tissue = cells_.count() > 1;
+  std::vector<ClosedSurface> walls;
+  for (int c = 0; c < cells_.count(); ++c) {
+    walls.emplace_back(s_.wall.x, mesh_, c);
+    const int outside = first_particle_outside(s_.fluid.x, cells_.fluid[c], cells_.fluid[c + 1], walls.back());
+    if (outside >= 0)
+      throw NumericalFailure(where() + ": fluid particle " + std::to_string(outside) + " is outside " +
+                             (tissue ? "the wall of its cell " + std::to_string(c) : std::string("the cell wall")) +
+                             " at " + at(s_.fluid.x.col(outside)));
+  }
+  // Walls of different cells must not pass through each other (model.md §10).
+  for (int a = 0; a < cells_.count(); ++a)
+    for (int b = 0; b < cells_.count(); ++b) {
+      if (a == b || !walls[a].box_overlaps(walls[b])) continue;
+      for (Eigen::Index k = cells_.wall[a]; k < cells_.wall[a + 1]; ++k)
+        if (walls[b].contains(s_.wall.x.col(k)))
+          throw NumericalFailure(where() + ": wall particle " + std::to_string(k) + " of cell " + std::to_string(a) +
+                                 " is inside cell " + std::to_string(b) + " at " + at(s_.wall.x.col(k)) +
+                                 " (the walls interpenetrate)");
+    }
+}
+
+// model.md §6: L_p takes its compression value; the bottom plate touches the lowest wall particle
+// (no force yet) and stays; the top plate starts `gap` above its reach of the highest one.
+void Simulation::start_compression() {
+  s_.stage = Stage::Compression;
+  s_.stage_step = 0;
+  Lp_m_per_s_Pa_ = p_.compression_Lp_m_per_s_Pa;
+  Plates& plates = s_.plates;
+  const auto& z = s_.wall.x.row(2);
+  const Eigen::Vector3d centroid = s_.wall.x.rowwise().mean();
+  plates.active = true;
+  plates.axis_x_m = centroid.x();
+  plates.axis_y_m = centroid.y();
+  plates.bottom_z_m = z.minCoeff() - p_.plate_range_m;
+  plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
+  plates.start_time_s = s_.time_s;
+  plates.contact_height_m = cell_height_m(s_.wall.x);
+  plates.footprint_m2 = convex_hull_area_2d(s_.wall.x.topRows<2>());
+  plates.first_contact_top_z_m = std::nan("");
+  // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
+  neighbours_.invalidate();
+  compute_rates();
+}
+
+void Simulation::restore(const State& saved) {
+  if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size() ||
+      saved.lamella_intact.size() != s_.lamella_intact.size())
+    throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
+                     std::to_string(saved.wall.size()) + " wall particles and " +
+                     std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
+                     std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
+                     std::to_string(s_.lamella_intact.size()));
+  s_ = saved;
+  neighbours_.invalidate();
+  compute_rates();
+}
+
+Record Simulation::record() const {
+  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, plate_law_, s_.plates);
+  return measure(s_, mesh_, cells_, surface_, p_, eos(), load);
+}
+
+double Simulation::nominal_strain() const {
+  return s_.plates.active ? cellsim::nominal_strain(s_.plates.contact_height_m, cell_height_m(s_.wall.x)) : 0.0;
+}
+}  // namespace cellsim

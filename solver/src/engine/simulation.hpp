@@ -1,0 +1,116 @@
+#pragma once
+// One run of a tissue (one cell, or several: model.md §10): the state, and the step that advances it
+// (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
+// -> fluid forces -> wall forces -> forces between cells -> wall-fluid forces -> plates -> integrate
+// -> checks.
+#include <string>
+
+#include "core/params.hpp"
+#include "core/state.hpp"
+#include "engine/measures.hpp"
+#include "engine/phase_timer.hpp"
+#include "geometry/neighbours.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/tissue.hpp"
+#include "geometry/wall_mesh.hpp"
+#include "physics/bending.hpp"
+#include "physics/cell_contact.hpp"
+#include "physics/eos.hpp"
+#include "physics/fluid_pairs.hpp"
+#include "physics/kernel.hpp"
+#include "physics/lennard_jones.hpp"
+#include "physics/plates.hpp"
+#include "physics/pressure_coupling.hpp"
+#include "physics/wall_bonds.hpp"
+#include "physics/wall_fluid.hpp"
+
+namespace cellsim {
+
+class Simulation {
+ public:
+  Simulation(const Params& p, const Tissue& tissue);
+
+  void step();                  // one kick-drift-kick step of dt
+  void start_compression();     // switches L_p and places the plates (model.md §6)
+  void restore(const State& saved);  // continue from a saved state (same case geometry)
+  double nominal_strain() const;     // (H_c - H) / H_c during compression, 0 before
+
+  const State& state() const { return s_; }
+  State& mutable_state() { return s_; }
+  const WallMesh& mesh() const { return mesh_; }
+  const Params& params() const { return p_; }
+  EquationOfState eos() const;  // with the turgor of the moment
+  double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
+  Record record() const;
+  const PhaseTimer& timer() const { return timer_; }
+  const NeighbourLists& neighbours() const { return neighbours_; }
+  PhaseTimer& timer() { return timer_; }
+  // Threads for the fluid pair loop (threads.hpp); 1 unless set. Throws InputError if impossible.
+  void set_threads(int threads);
+
+  // Checks for a record: every fluid particle inside its own cell's wall, and no wall particle inside
+  // another cell. Throws NumericalFailure.
+  void check_containment() const;
+
+  // For the relaxation at rest (settle.hpp): forces at the current positions, and the restart of
+  // the clock once the cell is at rest (t = 0, velocities zero, D0 of Eq 6 and M_f0 taken anew).
+  void refresh_rates() { compute_rates(); }
+  const Eigen::Matrix3Xd& fluid_force() const { return fluid_.force; }
+  const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
+  double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
+  void start_at_rest();
+
+  // Per cell: the wall pressure (outward push along the normals / the cell's wall area) and the mean
+  // fluid pressure, at the last force evaluation.
+  const std::vector<double>& cell_wall_pressure_Pa() const { return cell_wall_pressure_Pa_; }
+  std::vector<double> cell_mean_fluid_pressure_Pa() const;
+  const CellRanges& cells() const { return cells_; }
+  const std::vector<LamellaBond>& lamella() const { return lamella_; }
+  const WallSurface& surface() const { return surface_; }
+
+ private:
+  void compute_rates();
+  void update_geometry();
+  void fluid_terms();
+  void mass_transfer();
+  void wall_terms();
+  void cell_contact_terms();
+  void wall_fluid_terms();
+  void plate_terms();
+  void kick(double half_dt);
+  void drift(double dt);
+  void apply_pressure_closure();
+  void check_state() const;
+  void check_time_step() const;
+  std::string where() const;
+
+  int threads_ = 1;
+
+  Params p_;
+  WallMesh mesh_;
+  CellRanges cells_;
+  std::vector<LamellaBond> lamella_;
+  CellContactLaw contact_law_;
+  std::vector<double> cell_wall_pressure_Pa_;
+  State s_;
+  Bending bending_;
+  NeighbourLists neighbours_;
+  LennardJones lj_;
+  PlateLaw plate_law_;
+  BondLaw bond_law_;
+
+  // Rates at the current positions.
+  FluidRates fluid_;
+  Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
+  Eigen::VectorXd dm_dt_;
+  Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation
+  BondScratch bond_scratch_;
+  WallFluidScratch lj_scratch_;
+  PressureCouplingScratch pressure_coupling_scratch_;
+  WallSurface surface_;  // area, volume and normals at the current positions
+  double Lp_m_per_s_Pa_;
+  double wall_spring_dt_limit_s_;
+  PhaseTimer timer_;
+};
+
+}  // namespace cellsim

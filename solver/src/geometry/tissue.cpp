@@ -1,0 +1,260 @@
+#include "geometry/tissue.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <utility>
+
+#include "core/errors.hpp"
+#include "geometry/cell.hpp"
+#include "geometry/hull.hpp"
+#include "geometry/surface.hpp"
+
+namespace cellsim {
+namespace {
+
+// A lamella bond joins facing wall particles up to this multiple of the wall gap apart (facing
+// layers are one gap apart; the particles of two faces do not line up, so partners sit a little farther).
+constexpr double kLamellaRangeOverGap = 1.5;
+// A face may not cut a cell closer to its centre than this fraction of its radius.
+constexpr double kSmallestFaceDistance = 0.3;
+
+// A face of a cell: the points x with x . normal = distance (from the cell's centre) bound it.
+struct Face {
+  Eigen::Vector3d normal;
+  double distance_m;
+  int neighbour;
+};
+
+std::vector<Eigen::Vector3d> lattice_centres(const Params& p, double distance_m) {
+  std::vector<Eigen::Vector3d> centres;
+  for (std::int64_t k = 0; k < p.cells_z; ++k)
+    for (std::int64_t j = 0; j < p.cells_y; ++j)
+      for (std::int64_t i = 0; i < p.cells_x; ++i) {
+        Eigen::Vector3d c(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k));
+        if (p.packing == kClosePacking) {
+          // Hexagonal layers (rows shifted by half), stacked A, B, C: face-centred cubic.
+          const double layer = static_cast<double>(k % 3);
+          c = Eigen::Vector3d(static_cast<double>(i) + 0.5 * static_cast<double>(j % 2) + 0.5 * layer,
+                              std::sqrt(3.0) / 2.0 * static_cast<double>(j) + layer / (2.0 * std::sqrt(3.0)),
+                              std::sqrt(2.0 / 3.0) * static_cast<double>(k));
+        }
+        centres.push_back(distance_m * c);
+      }
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& c : centres) mean += c;
+  mean /= static_cast<double>(centres.size());
+  for (auto& c : centres) c -= mean;  // the tissue centred on the origin (one cell: at the origin)
+  return centres;
+}
+
+// R (1 + spread z), z a seeded standard normal clipped to +-2 (Box-Muller on mt19937_64, which the
+// standard fixes bit for bit, unlike std::normal_distribution).
+std::vector<double> cell_radii(const Params& p, std::size_t count) {
+  const double radius = 0.5 * p.diameter_m;
+  std::vector<double> radii(count, radius);
+  if (p.diameter_spread == 0) return radii;
+  std::mt19937_64 random(static_cast<std::uint64_t>(p.tissue_seed));
+  const auto uniform = [&] { return (static_cast<double>(random() >> 11) + 0.5) * 0x1.0p-53; };
+  for (auto& r : radii) {
+    const double z = std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * M_PI * uniform());
+    r = radius * (1.0 + p.diameter_spread * std::clamp(z, -2.0, 2.0));
+  }
+  return radii;
+}
+
+// The faces of cell a: the radical plane with each cell whose sphere comes within the wall gap of a's,
+// moved back by half the gap, so that facing walls are one gap apart.
+std::vector<Face> faces_of(int a, const std::vector<Eigen::Vector3d>& centres, const std::vector<double>& radii,
+                           double gap_m) {
+  std::vector<Face> faces;
+  for (int b = 0; b < static_cast<int>(centres.size()); ++b) {
+    if (b == a) continue;
+    const Eigen::Vector3d ab = centres[b] - centres[a];
+    const double d = ab.norm(), ra = radii[a], rb = radii[b];
+    if (d >= ra + rb + gap_m) continue;  // nowhere nearer than the wall gap: no face between them
+    const double distance = (d * d + ra * ra - rb * rb) / (2.0 * d) - 0.5 * gap_m;
+    if (distance < kSmallestFaceDistance * ra) {
+      std::ostringstream msg;
+      msg << "tissue: cells " << a << " and " << b << " overlap too much (a face " << distance * 1e6
+          << " um from the centre of a cell of radius " << ra * 1e6
+          << " um); raise tissue.centre_distance_over_diameter, or lower tissue.diameter_spread or tissue.wall_gap_um";
+      throw InputError(msg.str());
+    }
+    faces.push_back({ab / d, distance, b});
+  }
+  return faces;
+}
+
+// A point of the sphere (relative to the centre) moved in along its radius onto the nearest face
+// that cuts it; points no face cuts stay as they are (bit for bit: the one-cell tissue is the cell).
+Eigen::Vector3d onto_faces(const Eigen::Vector3d& x, double radius, const std::vector<Face>& faces) {
+  double r = radius;
+  const Eigen::Vector3d u = x / radius;
+  for (const auto& f : faces) {
+    const double along = u.dot(f.normal);
+    if (along > 0 && f.distance_m < r * along) r = f.distance_m / along;
+  }
+  return r < radius ? Eigen::Vector3d(r * u) : x;
+}
+
+// The spiral's axis for a cell with these faces: its poles (the wall's least regular triangles, which
+// hold the fluid least well) as far from every face and its rim as the candidates allow, and at least
+// kLatticeRowClearance from every low-index row of the fluid lattice (a row ending under a pole leaks:
+// wall_mesh.cpp). No faces: the single cell's default axis.
+constexpr double kLatticeRowClearance = 0.1;  // rad, about 6 degrees
+Eigen::Vector3d spiral_axis(const std::vector<Face>& faces) {
+  if (faces.empty()) return default_spiral_axis();
+  std::vector<Eigen::Vector3d> rows;
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k)
+        if (i || j || k) rows.push_back(Eigen::Vector3d(i, j, k).normalized());
+  const Eigen::Matrix3Xd candidates = fibonacci_sphere(500, 1.0);
+  Eigen::Vector3d best = default_spiral_axis();
+  double best_score = INFINITY;
+  for (Eigen::Index c = 0; c < candidates.cols(); ++c) {
+    const Eigen::Vector3d u = candidates.col(c);
+    bool clear = true;
+    for (const auto& row : rows) clear = clear && u.dot(row) < std::cos(kLatticeRowClearance);
+    if (!clear) continue;
+    double score = 0;  // the largest |cos| between a pole and a face normal: smaller is farther
+    for (const auto& f : faces) score = std::max(score, std::abs(u.dot(f.normal)));
+    if (score < best_score) best_score = score, best = u;
+  }
+  return best;
+}
+
+bool inside_faces(const Eigen::Vector3d& x, const std::vector<Face>& faces, double margin_m) {
+  for (const auto& f : faces)
+    if (x.dot(f.normal) >= f.distance_m - margin_m) return false;
+  return true;
+}
+
+// Facing wall particles of cells a and b bonded: each particle near the face takes its nearest
+// partner across it, if within range; pairs found from both sides count once.
+void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, double range_m,
+                std::vector<LamellaBond>& bonds) {
+  const auto near_face = [&](int cell, const Eigen::Vector3d& normal, double distance) {
+    std::vector<int> near;
+    for (Eigen::Index k = t.cells.wall[cell]; k < t.cells.wall[cell + 1]; ++k)
+      if ((t.wall_x.col(k) - t.centre_m[cell]).dot(normal) > distance - range_m) near.push_back(static_cast<int>(k));
+    return near;
+  };
+  const double between = (t.centre_m[b] - t.centre_m[a]).norm();
+  const std::vector<int> side_a = near_face(a, face.normal, face.distance_m);
+  const std::vector<int> side_b = near_face(b, -face.normal, between - face.distance_m - gap_m);  // b's own face
+  std::vector<LamellaBond> found;
+  const auto nearest = [&](int from, const std::vector<int>& others) {
+    int best = -1;
+    double best2 = range_m * range_m;
+    for (int o : others) {
+      const double r2 = (t.wall_x.col(from) - t.wall_x.col(o)).squaredNorm();
+      if (r2 < best2) best2 = r2, best = o;
+    }
+    if (best >= 0) found.push_back({std::min(from, best), std::max(from, best), std::sqrt(best2)});
+  };
+  for (int i : side_a) nearest(i, side_b);
+  for (int j : side_b) nearest(j, side_a);
+  const auto pair_of = [](const LamellaBond& bond) { return std::make_pair(bond.a, bond.b); };
+  std::sort(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) < pair_of(y); });
+  found.erase(std::unique(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) == pair_of(y); }),
+              found.end());
+  bonds.insert(bonds.end(), found.begin(), found.end());
+}
+
+}  // namespace
+
+namespace {
+// The cell of each particle, from each cell's first particle (first.back(): the particle count).
+std::vector<int> cell_of(const std::vector<Eigen::Index>& first) {
+  std::vector<int> cell(static_cast<std::size_t>(first.back()));
+  for (std::size_t c = 0; c + 1 < first.size(); ++c)
+    std::fill(cell.begin() + first[c], cell.begin() + first[c + 1], static_cast<int>(c));
+  return cell;
+}
+}  // namespace
+
+std::vector<int> CellRanges::cell_of_fluid() const { return cell_of(fluid); }
+std::vector<int> CellRanges::cell_of_wall() const { return cell_of(wall); }
+
+Tissue build_tissue(Params& p) {
+  const Cell model = build_cell(p);  // the paper's cell: derived parameters, dx, masses
+  if (!p.wall_gap_m) p.wall_gap_m = p.thickness_m;
+  const double radius = 0.5 * p.diameter_m, gap = *p.wall_gap_m;
+  const std::vector<Eigen::Vector3d> centres = lattice_centres(p, p.centre_distance_over_diameter * p.diameter_m);
+  const std::vector<double> radii = cell_radii(p, centres.size());
+
+  Tissue t;
+  t.mesh.cell_triangles = {0};
+  t.wall_mass_kg = model.wall_mass_kg;
+  t.fluid_spacing_m = model.fluid_spacing_m;
+  t.centre_m = centres;
+  t.wall_particle_area_m2 = M_PI * p.diameter_m * p.diameter_m / static_cast<double>(p.n_wall);
+  std::vector<Eigen::Matrix3Xd> walls, fluids;
+  std::vector<double> fluid_masses;
+  for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
+    const double rc = radii[c], scale = rc / radius;
+    const std::vector<Face> faces = faces_of(c, centres, radii, gap);
+    // The wall: a sphere with the wall's particle spacing, each point moved onto the faces; its
+    // triangles are the sphere's (every point stays on a ray from the centre: still outward).
+    const int n_wall = static_cast<int>(std::lround(static_cast<double>(p.n_wall) * scale * scale));
+    const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, rc, spiral_axis(faces));
+    const std::vector<std::array<int, 3>> triangles = convex_hull_triangles(sphere);
+    Eigen::Matrix3Xd wall(3, sphere.cols());
+    for (Eigen::Index k = 0; k < sphere.cols(); ++k) wall.col(k) = onto_faces(sphere.col(k), rc, faces);
+    WallMesh mesh = build_wall_mesh(wall, triangles);
+    // The fluid: the lattice points the sphere of rc would hold, less those within the fill gap of a face.
+    double farthest = 0;
+    const Eigen::Matrix3Xd lattice =
+        nearest_lattice_points(static_cast<int>(std::lround(static_cast<double>(p.n_fluid) * scale * scale * scale)),
+                               &farthest) *
+        model.fluid_spacing_m;
+    std::vector<Eigen::Index> kept;
+    for (Eigen::Index i = 0; i < lattice.cols(); ++i)
+      if (inside_faces(lattice.col(i), faces, *p.fill_gap_m)) kept.push_back(i);
+    if (kept.empty()) throw InputError("tissue: cell " + std::to_string(c) + " holds no fluid particle");
+    Eigen::Matrix3Xd fluid(3, static_cast<Eigen::Index>(kept.size()));
+    for (std::size_t i = 0; i < kept.size(); ++i) fluid.col(static_cast<Eigen::Index>(i)) = lattice.col(kept[i]);
+    // Its fluid mass: rho0 times the sphere's volume, cut as the faces cut the wall's.
+    const double sphere_volume = 4.0 / 3.0 * M_PI * rc * rc * rc;
+    const double cut = faces.empty() ? 1.0 : wall_surface(wall, mesh).volume_m3 / wall_surface(sphere, mesh).volume_m3;
+    fluid_masses.push_back(p.fluid_density_kg_m3 * (sphere_volume * cut) / static_cast<double>(fluid.cols()));
+
+    const int first_triangle = static_cast<int>(t.mesh.triangles.size());
+    for (auto& tri : mesh.triangles)
+      for (int& v : tri) v += static_cast<int>(t.cells.wall.back());
+    for (auto& b : mesh.bonds)
+      for (int& v : b) v += static_cast<int>(t.cells.wall.back());
+    for (auto& h : mesh.hinges) {
+      for (int* v : {&h.a, &h.b, &h.c, &h.d}) *v += static_cast<int>(t.cells.wall.back());
+      h.t1 += first_triangle;
+      h.t2 += first_triangle;
+    }
+    t.mesh.triangles.insert(t.mesh.triangles.end(), mesh.triangles.begin(), mesh.triangles.end());
+    t.mesh.bonds.insert(t.mesh.bonds.end(), mesh.bonds.begin(), mesh.bonds.end());
+    t.mesh.rest_length_m.insert(t.mesh.rest_length_m.end(), mesh.rest_length_m.begin(), mesh.rest_length_m.end());
+    t.mesh.hinges.insert(t.mesh.hinges.end(), mesh.hinges.begin(), mesh.hinges.end());
+    t.cells.wall.push_back(t.cells.wall.back() + wall.cols());
+    t.cells.fluid.push_back(t.cells.fluid.back() + fluid.cols());
+    t.mesh.cell_triangles.push_back(static_cast<int>(t.mesh.triangles.size()));
+    walls.push_back(wall.colwise() + centres[c]);
+    fluids.push_back(fluid.colwise() + centres[c]);
+  }
+  t.wall_x.resize(3, t.cells.wall.back());
+  t.fluid_x.resize(3, t.cells.fluid.back());
+  t.fluid_mass_kg.resize(t.cells.fluid.back());
+  for (int c = 0; c < t.cells.count(); ++c) {
+    t.wall_x.middleCols(t.cells.wall[c], t.cells.wall_count(c)) = walls[c];
+    t.fluid_x.middleCols(t.cells.fluid[c], t.cells.fluid_count(c)) = fluids[c];
+    t.fluid_mass_kg.segment(t.cells.fluid[c], t.cells.fluid_count(c)).setConstant(fluid_masses[c]);
+  }
+  for (int a = 0; a < t.cells.count(); ++a)
+    for (const Face& face : faces_of(a, centres, radii, gap))
+      if (face.neighbour > a) bond_faces(t, a, face.neighbour, face, gap, kLamellaRangeOverGap * gap, t.lamella);
+  return t;
+}
+
+}  // namespace cellsim

@@ -1,0 +1,234 @@
+#include "io/case_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "core/errors.hpp"
+#include "io/case_schema.hpp"
+
+namespace cellsim {
+namespace {
+
+using nlohmann::json;
+
+const char* kDescriptionKey = "description";  // free text allowed at the top level
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t subst = prev[j - 1] + (std::tolower(a[i - 1]) == std::tolower(b[j - 1]) ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::vector<std::string> all_keys() {
+  std::vector<std::string> keys;
+  for (const auto& s : param_specs()) keys.push_back(s.key);
+  return keys;
+}
+
+std::set<std::string> sections() {
+  std::set<std::string> out;
+  for (const auto& s : param_specs()) out.insert(s.key.substr(0, s.key.find('.')));
+  return out;
+}
+
+std::string show(const json& v) {
+  std::string s = v.dump();
+  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+[[noreturn]] void unknown_key(const std::string& path) {
+  throw InputError("unknown key '" + path + "'; did you mean '" + nearest_key(path, all_keys()) +
+                   "'? (run 'cellsim params' for the list of keys)");
+}
+
+// Validates one leaf against its spec and stores it (in SI) into p.
+void assign(const ParamSpec& spec, const json& value, Params& p) {
+  const std::string where = spec.key + " = " + show(value);
+  if (value.is_null()) {
+    if (!is_optional(spec))
+      throw InputError(where + ": a value is required (" + describe_range(spec) + ", in " + spec.unit + ")");
+    p.*std::get<std::optional<double> Params::*>(spec.member) = std::nullopt;
+    return;
+  }
+  if (is_choice(spec)) {
+    const auto& names = spec.choices;
+    const auto it = value.is_string() ? std::find(names.begin(), names.end(), value.get<std::string>()) : names.end();
+    if (it == names.end()) throw InputError(where + ": expected " + describe_range(spec));
+    p.*std::get<Choice Params::*>(spec.member) = static_cast<Choice>(it - names.begin());
+    return;
+  }
+  if (!value.is_number())
+    throw InputError(where + ": expected a number (" + describe_range(spec) + ", in " + spec.unit + ")" +
+                     (is_optional(spec) ? " or null for auto" : ""));
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) throw InputError(where + ": value must be finite (" + describe_range(spec) + ")");
+  if (is_integer(spec) && x != std::floor(x))
+    throw InputError(where + ": expected an integer (" + describe_range(spec) + ")");
+  const bool above = spec.min_inclusive ? x >= spec.min : x > spec.min;
+  const bool below = spec.max_inclusive ? x <= spec.max : x < spec.max;
+  if (!above || !below)
+    throw InputError(where + ": out of range; allowed " + describe_range(spec) + " (" + spec.unit + ")");
+  std::visit(
+      [&](auto member) {
+        using M = decltype(member);
+        if constexpr (std::is_same_v<M, std::int64_t Params::*>)
+          p.*member = static_cast<std::int64_t>(x);
+        else if constexpr (std::is_same_v<M, Choice Params::*>)
+          p.*member = static_cast<Choice>(x);  // not reached: choices are names (above)
+        else
+          p.*member = x * spec.to_si;
+      },
+      spec.member);
+}
+
+}  // namespace
+
+std::string nearest_key(const std::string& key, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::string::npos;
+  for (const auto& c : candidates) {
+    // Compare against the full path and its last part, so "G_Mpa" finds "wall.G_MPa".
+    const std::size_t dot = c.rfind('.');
+    const std::size_t d = std::min(edit_distance(key, c), dot == std::string::npos
+                                                              ? edit_distance(key, c)
+                                                              : edit_distance(key.substr(key.rfind('.') + 1),
+                                                                              c.substr(dot + 1)));
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+// The JSON parser rejects numbers like 1e999 without saying where; find the key they belong to.
+std::string key_before(const std::string& text, const std::string& token) {
+  const auto at = text.find(token);
+  if (at == std::string::npos) return "?";
+  static const std::regex key_re(R"re("([^"]+)"\s*:)re");
+  static const std::regex section_re(R"re("([^"]+)"\s*:\s*\{)re");
+  std::string key, section;
+  const std::string before = text.substr(0, at);
+  for (std::sregex_iterator it(before.begin(), before.end(), key_re), end; it != end; ++it) key = (*it)[1];
+  for (std::sregex_iterator it(before.begin(), before.end(), section_re), end; it != end; ++it) section = (*it)[1];
+  return section.empty() || section == key ? key : section + "." + key;
+}
+
+json read_case_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot open case file '" + path + "': no such file or not readable");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw InputError("case file '" + path + "' is not valid JSON: " + e.what());
+  } catch (const json::out_of_range& e) {  // number overflow, e.g. 1e999
+    const std::string what = e.what();
+    const auto q1 = what.find('\''), q2 = what.rfind('\'');
+    const std::string token = q1 != std::string::npos && q2 > q1 ? what.substr(q1 + 1, q2 - q1 - 1) : "";
+    throw InputError(key_before(text, token) + " = " + token + ": value must be finite (case file '" + path + "')");
+  }
+}
+
+void apply_override(json& doc, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set '" + assignment + "': expected section.key=value, e.g. drying.dryness=0.5");
+  const std::string key = assignment.substr(0, eq);
+  const std::string text = assignment.substr(eq + 1);
+  if (!find_param(key)) unknown_key(key);
+  const std::string section = key.substr(0, key.find('.'));
+  if (!doc.is_object()) doc = json::object();
+  if (!doc.contains(section) || !doc[section].is_object()) doc[section] = json::object();
+  if (is_choice(*find_param(key))) {  // a name, as typed: --set coupling.model=pressure
+    doc[section][key.substr(key.find('.') + 1)] = text;
+    return;
+  }
+  std::string lower = text;
+  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+  if (lower == "nan" || lower == "inf" || lower == "-inf" || lower == "infinity" || lower == "-infinity")
+    throw InputError(key + " = " + text + ": value must be finite (" + describe_range(*find_param(key)) + ")");
+  json value;
+  try {
+    value = json::parse(text);
+  } catch (const json::parse_error&) {
+    throw InputError(key + " = '" + text + "': not a number (" + describe_range(*find_param(key)) + ")");
+  }
+  doc[section][key.substr(key.find('.') + 1)] = value;
+}
+
+Params validate_case(const json& doc) {
+  if (!doc.is_object()) throw InputError("case must be a JSON object with sections " + show(json(sections())));
+  Params p;
+  for (const auto& spec : param_specs())  // defaults first; derived keys start empty
+    if (is_choice(spec))
+      assign(spec, spec.choices.front(), p);
+    else if (spec.default_value)
+      assign(spec, *spec.default_value, p);
+
+  const auto known_sections = sections();
+  for (const auto& [section, body] : doc.items()) {
+    if (section == kDescriptionKey) {
+      if (!body.is_string()) throw InputError("description = " + show(body) + ": expected a string");
+      continue;
+    }
+    if (!known_sections.count(section)) {
+      if (body.is_object() && !body.empty()) unknown_key(section + "." + body.begin().key());
+      unknown_key(section);
+    }
+    if (!body.is_object())
+      throw InputError(section + " = " + show(body) + ": expected an object of " + section + ".* keys");
+    for (const auto& [name, value] : body.items()) {
+      const std::string path = section + "." + name;
+      const ParamSpec* spec = find_param(path);
+      if (!spec) unknown_key(path);
+      assign(*spec, value, p);
+    }
+  }
+  return p;
+}
+
+// SI back to the file's unit, rounded to 15 significant digits so 150e-6 / 1e-6 prints as 150.
+double to_file_unit(double si, double to_si) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", si / to_si);
+  return std::strtod(text, nullptr);
+}
+
+json case_to_json(const Params& p) {
+  json doc = json::object();
+  for (const auto& spec : param_specs()) {
+    const std::string section = spec.key.substr(0, spec.key.find('.'));
+    const std::string name = spec.key.substr(spec.key.find('.') + 1);
+    json value;
+    std::visit(
+        [&](auto member) {
+          using M = decltype(member);
+          if constexpr (std::is_same_v<M, std::int64_t Params::*>)
+            value = p.*member;
+          else if constexpr (std::is_same_v<M, Choice Params::*>)
+            value = spec.choices.at(static_cast<std::size_t>(p.*member));
+          else if constexpr (std::is_same_v<M, double Params::*>)
+            value = to_file_unit(p.*member, spec.to_si);
+          else
+            value = (p.*member) ? json(to_file_unit(*(p.*member), spec.to_si)) : json(nullptr);
+        },
+        spec.member);
+    doc[section][name] = value;
+  }
+  return doc;
+}
+
+}  // namespace cellsim

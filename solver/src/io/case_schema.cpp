@@ -1,0 +1,280 @@
+#include "io/case_schema.hpp"
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace cellsim {
+namespace {
+
+constexpr double kMicro = 1e-6;
+
+ParamSpec real(std::string key, std::string unit, double to_si, double Params::*member,
+               double def, double min, bool min_incl, double max, bool max_incl,
+               std::string meaning, std::string equation) {
+  return {std::move(key), std::move(unit), to_si, member, def, min, max, min_incl, max_incl,
+          std::move(meaning), std::move(equation), "", {}};
+}
+
+ParamSpec integer(std::string key, std::int64_t Params::*member, double def, double min, double max,
+                  std::string meaning, std::string equation) {
+  return {std::move(key), "1", 1.0, member, def, min, max, true, true,
+          std::move(meaning), std::move(equation), "", {}};
+}
+
+ParamSpec derived(std::string key, std::string unit, double to_si, std::optional<double> Params::*member,
+                  double min, bool min_incl, double max, bool max_incl,
+                  std::string meaning, std::string equation, std::string auto_rule) {
+  return {std::move(key), std::move(unit), to_si, member, std::nullopt, min, max, min_incl, max_incl,
+          std::move(meaning), std::move(equation), std::move(auto_rule), {}};
+}
+
+ParamSpec choice(std::string key, Choice Params::*member, std::vector<std::string> names, std::string meaning,
+                 std::string equation) {
+  const double last = static_cast<double>(names.size()) - 1;
+  return {std::move(key), "-", 1.0, member, 0.0, 0, last, true, true,
+          std::move(meaning), std::move(equation), "", std::move(names)};
+}
+
+std::vector<ParamSpec> build_specs() {
+  using P = Params;
+  return {
+      // cell
+      real("cell.diameter_um", "um", kMicro, &P::diameter_m, 150, 1, true, 10000, true,
+           "initial cell diameter D0 = 2R (Table 3: R = 75 um)", "model.md §1, Eq 6"),
+      integer("cell.n_wall", &P::n_wall, 2067, 12, 200000,
+              "number of wall particles N_w (200 um cell: 2516)", "model.md §1"),
+      integer("cell.n_fluid", &P::n_fluid, 3082, 1, 1000000,
+              "number of fluid particles N_f (200 um cell: 3708)", "model.md §1, Eq 11"),
+      real("cell.turgor_kPa", "kPa", 1e3, &P::turgor_Pa, 200, 0, true, 10000, true,
+           "fresh turgor pressure P_T0; P_T(X) = P_T0 X", "Eq 7, model.md §5"),
+      real("cell.fluid_density_kg_m3", "kg/m^3", 1.0, &P::fluid_density_kg_m3, 1000, 0, false, 1e5, true,
+           "reference fluid density rho0; fluid mass m_f = rho0 (4/3) pi R^3 / N_f", "Eq 7, model.md §1"),
+      real("cell.wall_mass_fraction", "1", 1.0, &P::wall_mass_fraction, 0.1, 0, false, 10, true,
+           "total wall mass / total fluid mass (Table 3: 1.767e-10 / 1.767e-9)", "model.md §1"),
+      derived("cell.fill_gap_um", "um", kMicro, &P::fill_gap_m, 0, true, 1000, true,
+              "fluid particles fill the sphere of radius R - fill_gap", "model.md §1",
+              "0.7 r0 (lennard_jones), half the fluid spacing (pressure)"),
+      // tissue: cells side by side (1 x 1 x 1: the single cell)
+      integer("tissue.cells_x", &P::cells_x, 1, 1, 20, "cells along x", "model.md §10"),
+      integer("tissue.cells_y", &P::cells_y, 1, 1, 20, "cells along y", "model.md §10"),
+      integer("tissue.cells_z", &P::cells_z, 1, 1, 20, "cells along z (layers, stacked between the plates)",
+              "model.md §10"),
+      choice("tissue.packing", &P::packing, {"cubic", "close"},
+             "where the cells' centres sit: cubic (a simple cubic lattice) or close (hexagonal layers stacked "
+             "ABC, face-centred cubic)", "model.md §10"),
+      real("tissue.centre_distance_over_diameter", "1", 1.0, &P::centre_distance_over_diameter, 0.85, 0.6, true, 2,
+           true, "distance between neighbouring cells' centres / D0; below 1 the cells press flat faces on each "
+           "other (0.85: porosity ~0.23 in cubic packing)", "model.md §10"),
+      real("tissue.diameter_spread", "1", 1.0, &P::diameter_spread, 0, 0, true, 0.3, true,
+           "standard deviation of the cells' diameters / D0 (seeded; faces follow the radical planes)",
+           "model.md §10"),
+      integer("tissue.seed", &P::tissue_seed, 1, 0, 2147483647, "seed of the diameters' spread", "model.md §10"),
+      derived("tissue.wall_gap_um", "um", kMicro, &P::wall_gap_m, 0, false, 1000, true,
+              "distance between the particle layers of facing walls (each layer is its wall's mid-surface)",
+              "model.md §10", "the wall thickness t0 (two half walls)"),
+      real("tissue.contact_stiffness_N_m", "N/m", 1.0, &P::contact_stiffness_N_m, 1e3, 0, true, 1e9, true,
+           "repulsion between wall particles of different cells closer than the wall gap (Eq 22's form and k_pw)",
+           "model.md §10"),
+      real("tissue.lamella_stiffness_N_m", "N/m", 1.0, &P::lamella_stiffness_N_m, 1e3, 0, true, 1e9, true,
+           "elastic stiffness of a middle-lamella bond between facing wall particles, about its initial length "
+           "(up to its peak tension)", "model.md §10"),
+      real("tissue.lamella_strength_MPa", "MPa", 1e6, &P::lamella_strength_Pa, 1.5, 0, true, 1e4, true,
+           "a middle-lamella bond's peak tension is this times the area a wall particle owns (pi D0^2 / N_w: "
+           "51 uN for the default cell); past it the bond softens", "model.md §10"),
+      real("tissue.lamella_fracture_energy_J_m2", "J/m^2", 1.0, &P::lamella_fracture_energy_J_m2, 5.0, 0, true, 1e6,
+           true,
+           "energy that separates a middle-lamella bond for good, per area a wall particle owns: the bond softens "
+           "linearly from its peak to zero force over this (0: brittle, it breaks at its peak)",
+           "model.md §10"),
+      // fluid
+      real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
+           "dynamic viscosity mu", "Eq 4"),
+      real("fluid.bulk_modulus_MPa", "MPa", 1e6, &P::bulk_modulus_Pa, 20, 0, false, 1e5, true,
+           "fluid compression modulus K", "Eq 7"),
+      real("fluid.eos_exponent", "1", 1.0, &P::eos_exponent, 7, 1, true, 15, true,
+           "exponent of the Tait equation of state", "Eq 7"),
+      derived("fluid.h0_um", "um", kMicro, &P::h0_m, 0, false, 1000, true,
+              "initial SPH smoothing length h0", "Eq 5, Eq 6",
+              "6.8 um x dx / dx_ref (dx: fluid lattice spacing; dx_ref: that of the default 150 um cell)"),
+      // wall
+      real("wall.G_MPa", "MPa", 1e6, &P::G_Pa, 18, 0, true, 1e5, true,
+           "cell wall shear modulus G", "Eq 15"),
+      real("wall.thickness_um", "um", kMicro, &P::thickness_m, 6, 0, true, 1000, true,
+           "cell wall thickness t0", "Eq 15"),
+      real("wall.damping_N_s_m", "N s/m", 1.0, &P::damping_N_s_m, 5e-6, 0, true, 1, true,
+           "wall bond damping constant gamma", "Eq 16"),
+      real("wall.bending_stiffness_J", "J", 1.0, &P::bending_stiffness_J, 1e-10, 0, true, 1e-3, true,
+           "wall bending stiffness k_b", "Eq 20"),
+      real("wall.contraction_stiffness_N_m", "N/m", 1.0, &P::contraction_stiffness_N_m, 1e4, 0, true, 1e9, true,
+           "wall contraction force coefficient k_wc", "Eq 21"),
+      real("wall.contraction_ratio", "1", 1.0, &P::contraction_ratio, 0.4, 0, true, 1, false,
+           "c = a/b: fully dried rest length is l0 (1 - c)", "Eq 21"),
+      // coupling
+      choice("coupling.model", &P::coupling_model, {"lennard_jones", "pressure"},
+             "wall-fluid coupling: lennard_jones (the paper's, Eqs 12-13, 17-19) or pressure (the fluid's SPH "
+             "pressure on the wall's surface, with the exact reaction; docs/model-closures.md)",
+             "model.md §4"),
+      derived("coupling.r0_um", "um", kMicro, &P::r0_m, 0, false, 1000, true,
+              "wall-fluid Lennard-Jones equilibrium gap r0", "Eqs 12-13, 17-19",
+              "1.8 x the largest wall-triangle circumradius (8.1 um for the default mesh)"),
+      real("coupling.repulsion_f0_N_m", "N m", 1.0, &P::repulsion_f0_N_m, 5e-12, 0, true, 1, true,
+           "LJ contact strength for r < r0 (Table 3 prints N/m; N m gives a force)", "Eqs 12, 17-18"),
+      real("coupling.attraction_f0_N_m", "N m", 1.0, &P::attraction_f0_N_m, 1e-11, 0, true, 1, true,
+           "LJ contact strength for r0 <= r < r_c", "Eqs 13, 19"),
+      real("coupling.attraction_cutoff_over_h", "1", 1.0, &P::attraction_cutoff_over_h, 2, 0, true, 2, true,
+           "attraction cut-off r_c in units of the smoothing length h", "Eqs 13, 19"),
+      // settle: the start at rest
+      integer("settle.max_iterations", &P::settle_max_iterations, 20000, 0, 1e9,
+              "pseudo-steps of the relaxation at rest at the fresh turgor before drying starts (0: start "
+              "from the cut lattice as built, with its shock)", "docs/model-closures.md"),
+      real("settle.tolerance", "1", 1.0, &P::settle_tolerance, 3e-4, 0, false, 1, true,
+           "the relaxation stops when the largest fluid acceleration is below this fraction of "
+           "P_T0 / (rho0 dx)", "docs/model-closures.md"),
+      // drying
+      real("drying.dryness", "1", 1.0, &P::dryness, 1.0, 0, false, 1, true,
+           "normalised moisture content X/X0 (1: fresh)", "Eq 21, model.md §5"),
+      integer("drying.steps", &P::drying_steps, 80000, 0, 1e9,
+              "most time steps of the drying stage: it ends earlier, at steady state (a case that reaches "
+              "the cap without it says so)", "model.md §5"),
+      real("drying.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::drying_Lp_m_per_s_Pa, 2.5e-6, 0, true, 1, true,
+           "wall permeability L_p during drying (raised to reach steady state fast)", "Eq 11"),
+      real("drying.ramp_time_us", "us", kMicro, &P::ramp_time_s, 20, 0, true, 1e6, true,
+           "time over which L_ref and the turgor ramp (smoothstep) from their fresh values to those of X", "Eq 21, model.md §5"),
+      real("drying.steady_window_us", "us", kMicro, &P::steady_window_s, 5, 0, false, 1e6, true,
+           "steady state: the criteria below must hold over this window, after the ramp", "model.md §5"),
+      real("drying.steady_pressure_tolerance", "1", 1.0, &P::steady_pressure_tolerance, 0.005, 0, false, 1, true,
+           "steady state: |mean fluid pressure - P_T(X)| at most this fraction of P_T0", "model.md §5"),
+      real("drying.steady_volume_tolerance", "1", 1.0, &P::steady_volume_tolerance, 5e-4, 0, false, 1, true,
+           "steady state: (largest - smallest enclosed volume) / volume over the window at most this",
+           "model.md §5"),
+      real("drying.steady_rms_speed_m_s", "m/s", 1.0, &P::steady_rms_speed_m_s, 0.02, 0, false, 1000, true,
+           "steady state: rms fluid speed sqrt(2 KE / M) at most this", "model.md §5"),
+      real("drying.pressure_closure_time_us", "us", kMicro, &P::pressure_closure_time_s, 2, 0, true, 1e6, true,
+           "relaxation time of the wall-pressure closure during drying (0: off)", "docs/model-closures.md"),
+      // compression
+      integer("compression.steps", &P::compression_steps, 25000, 0, 1e9,
+              "maximum time steps of the compression stage", "model.md §6"),
+      real("compression.plate_speed_m_s", "m/s", 1.0, &P::plate_speed_m_s, 1, 0, false, 1000, true,
+           "downward speed of the top plate", "model.md §6"),
+      real("compression.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::compression_Lp_m_per_s_Pa, 1e-12, 0, true, 1, true,
+           "wall permeability L_p during compression", "Eq 11"),
+      real("compression.gap_um", "um", kMicro, &P::plate_gap_m, 2, 0, true, 1000, true,
+           "initial gap between the top plate's reach and the cell", "model.md §6"),
+      real("compression.plate_range_um", "um", kMicro, &P::plate_range_m, 3, 0, false, 100, true,
+           "plate-wall interaction range r_pw", "Eq 22"),
+      real("compression.plate_stiffness_N_m", "N/m", 1.0, &P::plate_stiffness_N_m, 1e3, 0, false, 1e9, true,
+           "plate-wall force coefficient k_pw", "Eq 22"),
+      real("compression.plate_length_um", "um", kMicro, &P::plate_length_m, 150, 0, false, 1e5, true,
+           "plate footprint along x (the plate stress divides by length x width)", "Eq 22, model.md §8"),
+      real("compression.plate_width_um", "um", kMicro, &P::plate_width_m, 150, 0, false, 1e5, true,
+           "plate footprint along y", "Eq 22, model.md §8"),
+      derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
+              "stop compression when the nominal strain reaches this value", "model.md §6",
+              "none: run all compression.steps"),
+      // time
+      real("time.dt_ns", "ns", 1e-9, &P::dt_s, 1, 0, false, 1000, true,
+           "time step (checked against the wall-spring limit at the start, the CFL limits every step)", "model.md §7"),
+      // output
+      integer("output.record_every", &P::record_every, 100, 1, 1e9,
+              "steps between time-series records", "model.md §8"),
+      integer("output.snapshot_every", &P::snapshot_every, 5000, 0, 1e9,
+              "steps between particle snapshots (0: first and last state only)", "output-reference.md"),
+      real("output.progress_interval_s", "s", 1.0, &P::progress_interval_s, 5, 0, true, 1e6, true,
+           "wall-clock seconds between progress lines on stderr (0: every step)", "README.md"),
+  };
+}
+
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+const std::vector<ParamSpec>& param_specs() {
+  static const std::vector<ParamSpec> specs = build_specs();
+  return specs;
+}
+
+const ParamSpec* find_param(const std::string& key) {
+  for (const auto& s : param_specs())
+    if (s.key == key) return &s;
+  return nullptr;
+}
+
+bool is_integer(const ParamSpec& spec) {
+  return std::holds_alternative<std::int64_t Params::*>(spec.member);
+}
+
+bool is_optional(const ParamSpec& spec) {
+  return std::holds_alternative<std::optional<double> Params::*>(spec.member);
+}
+
+bool is_choice(const ParamSpec& spec) { return std::holds_alternative<Choice Params::*>(spec.member); }
+
+std::string describe_range(const ParamSpec& spec) {
+  if (is_choice(spec)) {
+    std::string names;
+    for (const auto& name : spec.choices) names += (names.empty() ? "" : ", ") + name;
+    return "one of " + names;
+  }
+  std::string r;
+  if (std::isfinite(spec.min)) r += format_number(spec.min) + (spec.min_inclusive ? " <= " : " < ");
+  r += "value";
+  if (std::isfinite(spec.max)) r += (spec.max_inclusive ? " <= " : " < ") + format_number(spec.max);
+  if (is_integer(spec)) r += ", an integer";
+  return r;
+}
+
+std::string reference_markdown() {
+  std::ostringstream s;
+  s << "| key | unit | default | allowed | meaning | equation |\n"
+       "|---|---|---|---|---|---|\n";
+  for (const auto& p : param_specs()) {
+    const std::string def = is_choice(p)        ? p.choices.front()
+                            : p.default_value ? format_number(*p.default_value)
+                                              : "auto: " + p.auto_rule;
+    s << "| `" << p.key << "` | " << p.unit << " | " << def << " | " << describe_range(p) << " | "
+      << p.meaning << " | " << p.equation << " |\n";
+  }
+  return s.str();
+}
+
+}  // namespace cellsim
+
+namespace cellsim {
+
+std::string json_schema() {
+  using nlohmann::json;
+  std::map<std::string, json> sections;
+  for (const auto& p : param_specs()) {
+    const std::string section = p.key.substr(0, p.key.find('.'));
+    json rule = {{"description", p.meaning + " [" + p.unit + "] (" + p.equation + ")"}};
+    if (is_choice(p)) {
+      rule["type"] = "string";
+      rule["enum"] = p.choices;
+    } else {
+      rule["type"] = is_integer(p) ? json("integer") : is_optional(p) ? json({"number", "null"}) : json("number");
+      rule[p.min_inclusive ? "minimum" : "exclusiveMinimum"] = p.min;
+      rule[p.max_inclusive ? "maximum" : "exclusiveMaximum"] = p.max;
+    }
+    json& s = sections[section];
+    if (s.is_null()) s = {{"type", "object"}, {"additionalProperties", false}, {"properties", json::object()}};
+    s["properties"][p.key.substr(p.key.find('.') + 1)] = rule;
+  }
+  json schema = {{"$schema", "http://json-schema.org/draft-07/schema#"},
+                 {"title", "cellsim case"},
+                 {"description", "Generated by 'cellsim schema'; see docs/case-reference.md"},
+                 {"type", "object"},
+                 {"additionalProperties", false},
+                 {"properties", {{"description", {{"type", "string"}}}}}};
+  for (auto& [name, s] : sections) schema["properties"][name] = s;
+  return schema.dump(2) + "\n";
+}
+
+}  // namespace cellsim

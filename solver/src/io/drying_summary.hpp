@@ -1,0 +1,25 @@
+#pragma once
+// How the start and the drying of a run went: written as attributes of every result file, and
+// carried from a dried state into the compressions that continue from it (--from).
+#include <cmath>
+#include <string>
+
+#include "engine/settle.hpp"
+
+namespace cellsim {
+
+struct DryingSummary {
+  SettleReport settle;
+  bool steady = false;              // drying ended at steady state (steady_state.hpp), not at its cap
+  double steady_time_s = std::nan("");  // simulated time at which it did
+
+  // The warning a run, its file and the report show when drying hit its cap unsteady.
+  std::string warning() const {
+    std::string w;
+    if (!steady) w += "drying reached drying.steps without a steady state; ";
+    if (settle.iterations > 0 && !settle.converged) w += "the relaxation at rest stopped at settle.max_iterations; ";
+    return w.empty() ? w : w.substr(0, w.size() - 2);
+  }
+};
+
+}  // namespace cellsim

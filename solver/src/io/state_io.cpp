@@ -1,0 +1,133 @@
+#include "io/state_io.hpp"
+
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "io/h5_eigen.hpp"
+
+namespace cellsim {
+namespace {
+
+// Plate scalars stored as attributes under their member names.
+struct PlateField {
+  const char* name;
+  double Plates::*member;
+};
+constexpr PlateField kPlateFields[] = {
+    {"plate_axis_x_m", &Plates::axis_x_m},           {"plate_axis_y_m", &Plates::axis_y_m},
+    {"plate_bottom_z_m", &Plates::bottom_z_m},       {"plate_top_z_m", &Plates::top_z_m},
+    {"plate_top_start_z_m", &Plates::top_start_z_m}, {"plate_start_time_s", &Plates::start_time_s},
+    {"plate_force_top_N", &Plates::force_top_N},     {"plate_force_bottom_N", &Plates::force_bottom_N},
+    {"plate_contact_height_m", &Plates::contact_height_m}, {"plate_footprint_m2", &Plates::footprint_m2},
+    {"plate_first_contact_top_z_m", &Plates::first_contact_top_z_m},
+};
+
+}  // namespace
+
+void write_drying_summary(hid_t parent, const DryingSummary& d) {  // read back in read_saved_run
+  h5::set_attr(parent, "settle_iterations", std::int64_t{d.settle.iterations});
+  h5::set_attr(parent, "settle_residual", d.settle.residual);
+  h5::set_attr(parent, "settle_converged", std::int64_t{d.settle.converged});
+  h5::set_attr(parent, "settle_mass_ratio", d.settle.mass_ratio);
+  h5::set_attr(parent, "settle_volume_ratio", d.settle.volume_ratio);
+  h5::set_attr(parent, "drying_steady", std::int64_t{d.steady});
+  h5::set_attr(parent, "drying_steady_time_s", d.steady_time_s);
+  h5::set_attr(parent, "warning", d.warning());
+}
+
+void write_state(hid_t parent, const State& s) {
+  h5::Handle g = h5::create_group(parent, "state");
+  h5::set_attr(g.id(), "time_s", s.time_s);
+  h5::set_attr(g.id(), "step", static_cast<std::int64_t>(s.step));
+  h5::set_attr(g.id(), "stage_step", static_cast<std::int64_t>(s.stage_step));
+  h5::set_attr(g.id(), "stage", static_cast<std::int64_t>(s.stage));
+  h5::set_attr(g.id(), "smoothing_length_m", s.smoothing_length_m);
+  h5::set_attr(g.id(), "initial_fluid_mass_kg", s.initial_fluid_mass_kg);
+  h5::set_attr(g.id(), "reference_diameter_m", s.reference_diameter_m);
+  h5::set_attr(g.id(), "wall_mass_kg", s.wall.mass_kg);
+  h5::set_attr(g.id(), "plates_active", static_cast<std::int64_t>(s.plates.active));
+  h5::set_attr(g.id(), "plate_contacts", static_cast<std::int64_t>(s.plates.contacts));
+  for (const auto& field : kPlateFields) h5::set_attr(g.id(), field.name, s.plates.*field.member);
+  h5::write_points(g.id(), "wall_positions", s.wall.x);
+  h5::write_points(g.id(), "wall_velocities", s.wall.v);
+  h5::write_points(g.id(), "fluid_positions", s.fluid.x);
+  h5::write_points(g.id(), "fluid_velocities", s.fluid.v);
+  h5::write_values(g.id(), "fluid_mass", s.fluid.m);
+  h5::write_values(g.id(), "fluid_density", s.fluid.rho);
+  if (!s.lamella_intact.empty())  // a tissue's bonds: which still hold (1) and which broke (0)
+    h5::write(g.id(), "lamella_intact", std::vector<std::int32_t>(s.lamella_intact.begin(), s.lamella_intact.end()),
+              {s.lamella_intact.size()});
+  if (!s.lamella_peak_opening_m.empty())
+    h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
+}
+
+SavedRun read_saved_run(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError("--from '" + path + "': no such file");
+  SavedRun run;
+  try {
+    h5::Handle file = h5::open_file_readonly(path);
+    if (!h5::has_attr(file.id(), "completed") || h5::get_attr_int(file.id(), "completed") != 1)
+      throw InputError("--from '" + path + "' is not a completed cellsim result (completed != 1)");
+    run.case_json = h5::get_attr_string(file.id(), "case_json");
+    DryingSummary& d = run.drying;  // as write_drying_summary wrote it
+    d.settle.iterations = h5::get_attr_int(file.id(), "settle_iterations");
+    d.settle.residual = h5::get_attr_double(file.id(), "settle_residual");
+    d.settle.converged = h5::get_attr_int(file.id(), "settle_converged") != 0;
+    d.settle.mass_ratio = h5::get_attr_double(file.id(), "settle_mass_ratio");
+    d.settle.volume_ratio = h5::get_attr_double(file.id(), "settle_volume_ratio");
+    d.steady = h5::get_attr_int(file.id(), "drying_steady") != 0;
+    d.steady_time_s = h5::get_attr_double(file.id(), "drying_steady_time_s");
+    h5::Handle g = h5::open_group(file.id(), "state");
+    State& s = run.state;
+    s.time_s = h5::get_attr_double(g.id(), "time_s");
+    s.step = h5::get_attr_int(g.id(), "step");
+    s.stage_step = h5::get_attr_int(g.id(), "stage_step");
+    s.stage = static_cast<Stage>(h5::get_attr_int(g.id(), "stage"));
+    s.smoothing_length_m = h5::get_attr_double(g.id(), "smoothing_length_m");
+    s.initial_fluid_mass_kg = h5::get_attr_double(g.id(), "initial_fluid_mass_kg");
+    s.reference_diameter_m = h5::get_attr_double(g.id(), "reference_diameter_m");
+    s.wall.mass_kg = h5::get_attr_double(g.id(), "wall_mass_kg");
+    s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
+    s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));
+    for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
+    s.wall.x = h5::read_points(g.id(), "wall_positions");
+    s.wall.v = h5::read_points(g.id(), "wall_velocities");
+    s.fluid.x = h5::read_points(g.id(), "fluid_positions");
+    s.fluid.v = h5::read_points(g.id(), "fluid_velocities");
+    s.fluid.m = h5::read_values(g.id(), "fluid_mass");
+    s.fluid.rho = h5::read_values(g.id(), "fluid_density");
+    if (h5::exists(g.id(), "lamella_intact")) {
+      const std::vector<std::int32_t> intact = h5::read_ints(g.id(), "lamella_intact");
+      s.lamella_intact.assign(intact.begin(), intact.end());
+      s.lamella_peak_opening_m = h5::exists(g.id(), "lamella_peak_opening")
+                                     ? h5::read_doubles(g.id(), "lamella_peak_opening")
+                                     : std::vector<double>(intact.size(), 0.0);  // saved before the bond law had damage
+    }
+
+    h5::Handle ts = h5::open_group(file.id(), "timeseries");
+    for (const auto& q : quantities()) {
+      const auto column = h5::read_doubles(ts.id(), q.name);
+      if (run.records.empty()) run.records.resize(column.size());
+      if (column.size() != run.records.size()) throw std::runtime_error("time series of unequal length");
+      for (std::size_t r = 0; r < column.size(); ++r) run.records[r].*q.member = column[r];
+    }
+    h5::Handle cells = h5::open_group(file.id(), "cells");
+    for (const auto& q : cell_quantities()) {
+      std::vector<hsize_t> dims;
+      const auto table = h5::read_doubles(cells.id(), q.name, &dims);
+      if (dims.size() != 2 || dims[0] != run.records.size()) throw std::runtime_error("per-cell series of unequal length");
+      for (std::size_t r = 0; r < run.records.size(); ++r)
+        (run.records[r].*q.member).assign(table.begin() + static_cast<std::ptrdiff_t>(r * dims[1]),
+                                          table.begin() + static_cast<std::ptrdiff_t>((r + 1) * dims[1]));
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const FileError& e) {
+    throw FileError(std::string("--from: ") + e.what());
+  } catch (const std::exception& e) {
+    throw InputError("--from '" + path + "' cannot be read as a cellsim result: " + e.what());
+  }
+  return run;
+}
+
+}  // namespace cellsim

@@ -1,0 +1,39 @@
+#pragma once
+// Wall bending, Eq 20: E_b = (k_b/2) sum_hinges L_n (1 - n1.n2)/(1 + n1.n2), n1 and n2 the unit
+// normals of the two triangles sharing a hinge edge, L_n = l0_n / mean(l0) (the edge's rest length,
+// a fixed geometric weight). Forces are -grad E_b, derived analytically from dot and cross products.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/surface.hpp"  // the triangle normals, computed once a step
+#include "geometry/wall_mesh.hpp"
+#include "parallel/owned_spans.hpp"
+
+namespace cellsim {
+
+class Bending {
+ public:
+  Bending(const WallMesh& mesh, double bending_stiffness_J);
+
+  double energy(const Eigen::Matrix3Xd& x) const;
+  // Adds -grad E_b to force (3 x N_w), with the triangle normals of x.
+  void add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, int threads,
+                  Eigen::Matrix3Xd& force) const;
+  void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;  // computes the normals
+
+ private:
+  template <class All>  // std::true_type: the span owns every target (owned_spans.hpp)
+  void add_hinges(All, const TriangleNormals& normals, const OwnedSpan& span, Eigen::Matrix3Xd& P) const;
+  template <class All>
+  void add_triangle_forces(All, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& P, const OwnedSpan& span,
+                           Eigen::Matrix3Xd& force) const;
+
+  const WallMesh& mesh_;
+  std::vector<double> weight_;  // k_b L_n per hinge
+  mutable Eigen::Matrix3Xd triangle_sum_;  // scratch of add_forces: weighted p summed per triangle
+  // Each thread's triangles and particles, and the hinges and triangles that touch them (owned_spans.hpp).
+  mutable OwnedSpans hinge_spans_, triangle_spans_;
+};
+
+}  // namespace cellsim

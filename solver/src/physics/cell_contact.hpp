@@ -1,0 +1,30 @@
+#pragma once
+// Forces between the walls of different cells (model.md §10). Contact: wall particles of different
+// cells closer than the wall gap g repel, F = k_c (g - r) along the line between them (Eq 22's form,
+// as between a plate and the wall). Middle lamella: bonded facing particles pull back to their initial
+// distance l0 by the cohesive law of lamella_law.hpp, and separate for good once opened past delta_f.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "geometry/neighbours.hpp"
+#include "geometry/tissue.hpp"
+#include "physics/lamella_law.hpp"
+
+namespace cellsim {
+
+struct CellContactLaw {
+  double gap_m = 0;
+  double contact_stiffness_N_m = 0;
+  LamellaLaw lamella;
+};
+
+// Adds the contact and lamella forces to wall_force (each pair's two forces are equal and opposite).
+// Each bond's largest opening so far is kept in peak_opening_m; a bond whose peak reaches delta_f is
+// marked separated in `intact` before it acts. Returns how many separated now.
+int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                            const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                            std::vector<char>& intact, std::vector<double>& peak_opening_m,
+                            Eigen::Matrix3Xd& wall_force);
+
+}  // namespace cellsim

@@ -1,0 +1,186 @@
+#include "physics/fluid_pairs.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "parallel/simd4.hpp"
+#include "parallel/threads.hpp"
+#include "physics/sph_terms.hpp"
+
+namespace cellsim {
+namespace {
+
+using simd::double4;
+
+// Where the padding index n of the pair list points: a particle far beyond any kernel support, at
+// rest, without mass, so that its lanes add exact zeros.
+constexpr double kFarAway_m = 1e30;
+
+// One record of 12 doubles per particle (columns 0..n-1, and column n for the padding index),
+// three fields of four: position (x, 0), velocity (v, 0), factors (m, P/rho^2, m/rho, 0). The
+// sums the pairs add up, (force, drho/dt), are records of four in a separate array per thread.
+enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kRecord = 12, kSum = 4 };
+
+// The records of particles [begin, end); the padding record is written by whoever ends at n.
+void fill_records(const FluidParticles& f, const EquationOfState& eos, Eigen::Index begin, Eigen::Index end,
+                  FluidRates& out) {
+  for (Eigen::Index i = begin; i < end; ++i) {
+    out.pressure[i] = eos.pressure(f.rho[i]);
+    const double P_over_rho2 = out.pressure[i] / (f.rho[i] * f.rho[i]), volume = f.m[i] / f.rho[i];
+    out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, 0.0;
+  }
+  if (end == f.size()) {
+    out.records.col(end).setZero();
+    out.records.col(end).segment<3>(kPosition).setConstant(kFarAway_m);
+  }
+}
+
+// Four records, transposed: lane l of field k is row l's entry k.
+struct Lanes {
+  double4 field[4];
+  Lanes(double4 a, double4 b, double4 c, double4 d) : field{a, b, c, d} {
+    simd::transpose(field[0], field[1], field[2], field[3]);
+  }
+};
+
+// Rows first_row[t] .. first_row[t + 1] - 1 go to thread t: the particles [n t / T, n (t + 1) / T)
+// that every other loop of the step gives it too, so each thread works on memory it wrote itself
+// (between cores, memory costs far more than a slightly uneven split of the pairs).
+std::vector<int> split_rows(const PairList& pairs, int threads) {
+  std::vector<int> first_row(static_cast<std::size_t>(threads) + 1);
+  for (int t = 0; t <= threads; ++t)
+    first_row[static_cast<std::size_t>(t)] = static_cast<int>(block_start(pairs.rows(), t, threads));
+  return first_row;
+}
+
+// The pairs of rows [begin, end) added to sums, four pairs of a row at a time (one per lane). The
+// differences x_ij, v_ij are taken on the records, before the transpose: fewer registers stay live.
+void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
+                    const double* records, int begin, int end, double* sums) {
+  const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
+  const int* offset = pairs.offset.data();
+  const int* index = pairs.index.data();
+  const double* position = records + kPosition;
+  const double* velocity = records + kVelocity;
+  const double* factors = records + kFactors;
+  const double4 mu_sum = simd::broadcast(2.0 * viscosity_Pa_s);  // mu_i + mu_j: one viscosity
+  for (int i = begin; i < end; ++i) {
+    const double4 x_i = simd::load(position + kRecord * i), v_i = simd::load(velocity + kRecord * i);
+    const double4 mi = simd::broadcast(factors[kRecord * i]), Ai = simd::broadcast(factors[kRecord * i + 1]),
+                  Vi = simd::broadcast(factors[kRecord * i + 2]);
+    double4 sum_i = {}, drho_i = {};
+    assert((offset[i + 1] - offset[i]) % kPairLanes == 0);
+    for (int q = offset[i]; q < offset[i + 1]; q += kPairLanes) {
+      const int* j = index + q;
+      const auto record = [&](const double* base, int l) { return simd::load(base + kRecord * j[l]); };
+      const Lanes xij(x_i - record(position, 0), x_i - record(position, 1), x_i - record(position, 2),
+                      x_i - record(position, 3));
+      const Lanes vij(v_i - record(velocity, 0), v_i - record(velocity, 1), v_i - record(velocity, 2),
+                      v_i - record(velocity, 3));
+      const Lanes factors_j(record(factors, 0), record(factors, 1), record(factors, 2), record(factors, 3));
+      const double4 mj = factors_j.field[0], Aj = factors_j.field[1], Vj = factors_j.field[2];
+      const double4 g = kernel.dW_dr_over_r(
+          simd::sqrt(xij.field[0] * xij.field[0] + xij.field[1] * xij.field[1] + xij.field[2] * xij.field[2]));
+      const double4 v_dot_grad =
+          g * (vij.field[0] * xij.field[0] + vij.field[1] * xij.field[1] + vij.field[2] * xij.field[2]);
+      drho_i += sph::continuity_rate(v_dot_grad, mj);
+      const double4 pressure = g * sph::pressure_coefficient(mi, mj, Ai, Aj);
+      const double4 viscous = g * sph::viscous_coefficient(mu_sum, Vi, Vj);
+      // Transposed back, lane l is j's record (F_ij, -drho_j): subtracted from j's sums it gives
+      // F_ji = -F_ij and adds drho_j; added to i's, its first three entries give F_ij.
+      const Lanes on_j(pressure * xij.field[0] + viscous * vij.field[0],
+                       pressure * xij.field[1] + viscous * vij.field[1],
+                       pressure * xij.field[2] + viscous * vij.field[2], -sph::continuity_rate(v_dot_grad, mi));
+      for (int l = 0; l < kPairLanes; ++l) {
+        double* sum_j = sums + kSum * j[l];
+        simd::store(sum_j, simd::load(sum_j) - on_j.field[l]);
+        sum_i += on_j.field[l];
+      }
+    }
+    sum_i[3] = simd::sum(drho_i);
+    simd::store(sums + kSum * i, simd::load(sums + kSum * i) + sum_i);
+  }
+}
+
+// The particles j >= last (but not the padding n) that rows [first, last) reach, ascending.
+void find_halo(const PairList& pairs, int first, int last, std::vector<char>& mark, std::vector<int>& halo) {
+  const int n = pairs.rows();
+  mark.assign(static_cast<std::size_t>(n), 0);
+  for (int q = pairs.offset[static_cast<std::size_t>(first)]; q < pairs.offset[static_cast<std::size_t>(last)]; ++q) {
+    const int j = pairs.index[static_cast<std::size_t>(q)];
+    if (j >= last && j < n) mark[static_cast<std::size_t>(j)] = 1;
+  }
+  halo.clear();
+  for (int j = last; j < n; ++j)
+    if (mark[static_cast<std::size_t>(j)]) halo.push_back(j);
+}
+
+// The blocks' sums for particles [begin, end), added in block order: each block wrote (and zeroed)
+// only its own rows and its halo.
+void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
+  out.force.middleCols(begin, end - begin).setZero();
+  out.drho_dt.segment(begin, end - begin).setZero();
+  for (std::size_t t = 0; t < out.thread_sums.size(); ++t) {
+    const auto& sums = out.thread_sums[t];
+    const auto& halo = out.halo[t];
+    for (auto j = std::lower_bound(halo.begin(), halo.end(), begin); j != halo.end() && *j < end; ++j) {
+      out.force.col(*j) += sums.col(*j).head<3>();
+      out.drho_dt[*j] += sums(3, *j);
+    }
+    const Eigen::Index from = std::max<Eigen::Index>(begin, out.first_row[t]),
+                       to = std::min<Eigen::Index>(end, out.first_row[t + 1]);
+    if (from >= to) continue;
+    out.force.middleCols(from, to - from) += sums.block(0, from, 3, to - from);
+    out.drho_dt.segment(from, to - from) += sums.row(3).segment(from, to - from).transpose();
+  }
+}
+
+}  // namespace
+
+// Each pair of the half list is visited once and applied to both particles, with the per-pair
+// physics of sph_terms.hpp (Eqs 3, 4, 10). Pairs beyond the kernel support (the list has a skin)
+// and padding get g = 0 and add exact zeros. The work is cut into `threads` blocks, each with its
+// own sums, added up in block order at the end: the result depends on the block count only, even
+// if the runtime runs the blocks on fewer threads than asked.
+void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out) {
+  const Eigen::Index n = f.size();
+  out.pressure.resize(n);
+  out.records.resize(kRecord, n + 1);
+  out.thread_sums.resize(static_cast<std::size_t>(threads));
+  out.first_row = split_rows(pairs, threads);
+  const bool new_halos = pairs.build == 0 || out.halo_build != pairs.build ||  // 0: a list not built by NeighbourLists
+                         out.halo.size() != static_cast<std::size_t>(threads);
+  out.halo.resize(static_cast<std::size_t>(threads));
+  out.halo_mark.resize(static_cast<std::size_t>(threads));
+  out.halo_build = pairs.build;
+  const auto run_blocks = [&](int first, int stride) {
+    for (int t = first; t < threads; t += stride) {
+      const auto b = static_cast<std::size_t>(t);
+      const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
+      fill_records(f, eos, r0, r1, out);
+      if (new_halos) find_halo(pairs, r0, r1, out.halo_mark[b], out.halo[b]);
+      // A block's sums need zeros only where its pairs add: its rows, its halo and the padding.
+      auto& sums = out.thread_sums[b];
+      sums.resize(kSum, n + 1);
+      sums.middleCols(r0, r1 - r0).setZero();
+      for (int j : out.halo[b]) sums.col(j).setZero();
+      sums.col(n).setZero();
+    }
+    if (stride > 1) wait_for_all_threads();  // every record is written before any block reads them
+    for (int t = first; t < threads; t += stride)
+      add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), out.first_row[static_cast<std::size_t>(t)],
+                     out.first_row[static_cast<std::size_t>(t) + 1],
+                     out.thread_sums[static_cast<std::size_t>(t)].data());
+  };
+  if (threads == 1)
+    run_blocks(0, 1);
+  else
+    run_on_threads(threads, run_blocks);
+  out.force.resize(3, n);
+  out.drho_dt.resize(n);
+  for_blocks(threads, n, [&](Eigen::Index begin, Eigen::Index end) { add_thread_sums(begin, end, out); });
+}
+
+}  // namespace cellsim

@@ -1,0 +1,35 @@
+#pragma once
+// The fluid-fluid pair loop: continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms over
+// a half pair list, each pair visited once and applied to both particles.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/state.hpp"
+#include "geometry/neighbours.hpp"
+#include "physics/eos.hpp"
+#include "physics/kernel.hpp"
+
+namespace cellsim {
+
+struct FluidRates {
+  Eigen::Matrix3Xd force;   // [N]
+  Eigen::VectorXd drho_dt;  // continuity part only [kg/m^3/s]
+  Eigen::VectorXd pressure; // EOS pressure [Pa]
+  // Scratch of the pair loop, kept to avoid reallocation: one record per particle, and the sums
+  // of each thread (fluid_pairs.cpp says what they hold).
+  Eigen::Matrix<double, 12, Eigen::Dynamic> records;
+  std::vector<Eigen::Matrix4Xd> thread_sums;
+  // Block t: rows [first_row[t], first_row[t + 1]), and the later particles its pairs reach (its
+  // halo, ascending), found once per build of the list (halo_build) and thread count.
+  std::vector<int> first_row;
+  std::vector<std::vector<int>> halo;
+  std::vector<std::vector<char>> halo_mark;
+  long halo_build = -1;
+};
+
+// Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
+void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out);
+
+}  // namespace cellsim

@@ -1,0 +1,46 @@
+#include "physics/wall_fluid.hpp"
+
+namespace cellsim {
+namespace {
+
+// Fluid rows [begin, end): pass 1 gathers r^2 of every listed pair; pass 2 evaluates f(r) over that
+// flat array (a loop the compiler vectorises: it holds the divisions); pass 3 applies f x_ik to both
+// particles. A function of its own, so that its scalars are not re-read after every store.
+void add_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const PairList& pairs,
+              const LennardJones& lj, Eigen::Index begin, Eigen::Index end, double* f, Eigen::Matrix3Xd& fluid_force,
+              Eigen::Matrix3Xd& on_wall) {
+  const int* offset = pairs.offset.data();
+  const int* index = pairs.index.data();
+  for (Eigen::Index i = begin; i < end; ++i) {
+    const Eigen::Vector3d xi = fluid_x.col(i);
+    for (int q = offset[i]; q < offset[i + 1]; ++q) f[q] = (xi - wall_x.col(index[q])).squaredNorm();
+  }
+  for (int q = offset[begin]; q < offset[end]; ++q) f[q] = lj.f_of_r2(f[q]);
+  for (Eigen::Index i = begin; i < end; ++i) {
+    const Eigen::Vector3d xi = fluid_x.col(i);
+    Eigen::Vector3d force_i = Eigen::Vector3d::Zero();
+    for (int q = offset[i]; q < offset[i + 1]; ++q) {
+      const int k = index[q];
+      const Eigen::Vector3d fik = f[q] * (xi - wall_x.col(k));
+      force_i += fik;
+      on_wall.col(k) -= fik;
+    }
+    fluid_force.col(i) += force_i;
+  }
+}
+
+}  // namespace
+
+// The wall's share goes through per-thread sums (block_sums.hpp); each fluid row is one thread's.
+void wall_fluid_forces(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const PairList& pairs,
+                       const LennardJones& lj, int threads, Eigen::Matrix3Xd& fluid_force, Eigen::Matrix3Xd& on_wall,
+                       WallFluidScratch& scratch) {
+  on_wall.setZero(3, wall_x.cols());
+  scratch.pair_f.resize(static_cast<Eigen::Index>(pairs.index.size()));
+  double* f = scratch.pair_f.data();
+  scratch.sums.add(threads, pairs.rows(), on_wall, [&](int, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& out) {
+    add_rows(fluid_x, wall_x, pairs, lj, begin, end, f, fluid_force, out);
+  });
+}
+
+}  // namespace cellsim

@@ -1,0 +1,56 @@
+"""The solver's source tree keeps the layers solver/README.md maps: each file includes only its own layer
+and the layers above it in the README's table, and every source file the docs name exists."""
+import re
+
+LAYER_ROW = re.compile(r"^\| `(\w+)/` \|", flags=re.M)
+INCLUDE = re.compile(r'^#include "([\w/.]+)"', flags=re.M)
+GENERATED = {"io/version.hpp": "io/version.hpp.in"}  # CMake writes it from the template
+
+
+def layers(root):
+    order = LAYER_ROW.findall((root / "solver" / "README.md").read_text())
+    assert len(order) >= 5, order  # the table is there: the test is not vacuous
+    return order
+
+
+def sources(root):
+    src = root / "solver" / "src"
+    return src, sorted(p for p in src.rglob("*") if p.is_file())
+
+
+def test_every_source_file_sits_in_a_mapped_layer(root):
+    order = layers(root)
+    src, files = sources(root)
+    assert {p.name for p in src.iterdir() if p.is_dir()} == set(order)
+    for path in files:
+        rel = path.relative_to(src)
+        assert len(rel.parts) == 2 and rel.parts[0] in order, f"solver/src/{rel} is outside the layers"
+
+
+def test_includes_name_an_existing_file_of_the_same_or_an_earlier_layer(root):
+    order = layers(root)
+    src, files = sources(root)
+    checked = 0
+    for path in files:
+        layer = path.relative_to(src).parts[0]
+        for target in INCLUDE.findall(path.read_text()):
+            where = src / GENERATED.get(target, target)
+            assert where.exists(), f"solver/src/{layer}/{path.name} includes {target}, which does not exist"
+            their = target.split("/")[0]
+            assert their in order and order.index(their) <= order.index(layer), \
+                f"solver/src/{layer}/{path.name} ({layer}) includes {target} from a later layer ({their})"
+            checked += 1
+    assert checked > 100
+
+
+def test_source_files_the_docs_name_exist(root):
+    order = "|".join(layers(root))
+    named = re.compile(rf"`((?:{order})/[\w.]+)`")
+    src = root / "solver" / "src"
+    docs = [root / "README.md", root / "solver" / "README.md", *sorted((root / "docs").glob("*.md"))]
+    found = 0
+    for doc in docs:
+        for name in named.findall(doc.read_text()):
+            assert (src / name).exists(), f"{doc.relative_to(root)} names {name}, not in solver/src"
+            found += 1
+    assert found > 30
