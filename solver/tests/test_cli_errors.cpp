@@ -112,6 +112,11 @@ TEST(Cli, HelpAndVersionSucceed) {
   ScratchDir dir("help");
   EXPECT_EQ(run_cli({"--help"}, dir).exit_code, 0);
   EXPECT_EQ(run_cli({"--version"}, dir).exit_code, 0);
+  for (const char* command : {"run", "bench", "validate"}) {  // help after a command: usage, no run
+    const auto r = run_cli({command, "--help"}, dir);
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    EXPECT_NE(r.out.find("usage:"), std::string::npos) << command;
+  }
 }
 
 TEST(CliErrors, ThreadCountOutOfRange) {

@@ -42,6 +42,7 @@ struct Args {
   std::vector<std::string> overrides;
   bool quiet = false;
   bool sizes = false;
+  bool help = false;  // --help after a command: the usage, as `cellsim --help`
   long steps = 2000;
   int repeats = 5;
   int threads = 1;
@@ -73,6 +74,7 @@ Args parse(int argc, char** argv) {
     else if (w == "--from") a.from_path = value(w);
     else if (w.rfind("--set=", 0) == 0) a.overrides.push_back(w.substr(6));
     else if (w == "--quiet") a.quiet = true;
+    else if (w == "--help" || w == "-h") a.help = true;
     else if (w == "--sizes") a.sizes = true;
     else if (w == "--steps") a.steps = positive_int(w, value(w));
     else if (w == "--repeats") a.repeats = static_cast<int>(positive_int(w, value(w)));
@@ -128,7 +130,7 @@ void bench(const Args& a) {
 
 int dispatch(int argc, char** argv) {
   const Args a = parse(argc, argv);
-  if (a.command == "--help" || a.command == "-h" || a.command == "help") {
+  if (a.help || a.command == "--help" || a.command == "-h" || a.command == "help") {
     std::cout << kUsage;
     return 0;
   }
