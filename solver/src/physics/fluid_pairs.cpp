@@ -22,17 +22,13 @@ constexpr double kFarAway_m = 1e30;
 // sums the pairs add up, (force, drho/dt), are records of four in a separate array per thread.
 enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kRecord = 12, kSum = 4 };
 
-// The records of particles [begin, end); the padding record is written by whoever ends at n.
+// The records of particles [begin, end).
 void fill_records(const FluidParticles& f, const EquationOfState& eos, Eigen::Index begin, Eigen::Index end,
                   FluidRates& out) {
   for (Eigen::Index i = begin; i < end; ++i) {
     out.pressure[i] = eos.pressure(f.rho[i]);
     const double P_over_rho2 = out.pressure[i] / (f.rho[i] * f.rho[i]), volume = f.m[i] / f.rho[i];
     out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, 0.0;
-  }
-  if (end == f.size()) {
-    out.records.col(end).setZero();
-    out.records.col(end).segment<3>(kPosition).setConstant(kFarAway_m);
   }
 }
 
@@ -116,6 +112,40 @@ void find_halo(const PairList& pairs, int first, int last, std::vector<char>& ma
     if (mark[static_cast<std::size_t>(j)]) halo.push_back(j);
 }
 
+// The last particle (not the padding n) that row i reaches, or i if none: a row is ascending, its
+// padding (n) at the end.
+int last_reached(const PairList& pairs, int i) {
+  const int n = pairs.rows();
+  for (int q = pairs.offset[static_cast<std::size_t>(i) + 1] - 1; q >= pairs.offset[static_cast<std::size_t>(i)]; --q)
+    if (pairs.index[static_cast<std::size_t>(q)] < n) return pairs.index[static_cast<std::size_t>(q)];
+  return i;
+}
+
+// Rows [r0, r1) of one block, a chunk at a time: each chunk first writes the records (from r0 on,
+// those not written before the barrier: from `written`) and zeroes the sums its pairs reach, then
+// adds its pairs. A record is thus written just before its first use and is still in cache when the
+// pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
+// same pairs in the same order, so the result does not change.
+void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
+               double viscosity_Pa_s, int r0, int r1, int written, FluidRates& out, Eigen::Matrix4Xd& sums) {
+  constexpr int kChunkRows = 256;
+  int zeroed = r0;
+  for (int c0 = r0; c0 < r1; c0 += kChunkRows) {
+    const int c1 = std::min(c0 + kChunkRows, r1);
+    int reach = c1;  // one past the last particle the chunk's rows reach
+    for (int i = c0; i < c1; ++i) reach = std::max(reach, last_reached(pairs, i) + 1);
+    if (std::min(reach, r1) > written) {  // records past r1 are the next block's, written before the barrier
+      fill_records(f, eos, written, std::min(reach, r1), out);
+      written = std::min(reach, r1);
+    }
+    if (reach > zeroed) {
+      sums.middleCols(zeroed, reach - zeroed).setZero();
+      zeroed = reach;
+    }
+    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), c0, c1, sums.data());
+  }
+}
+
 // The blocks' sums for particles [begin, end), added in block order: each block wrote (and zeroed)
 // only its own rows and its halo.
 void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
@@ -155,24 +185,42 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.halo.resize(static_cast<std::size_t>(threads));
   out.halo_mark.resize(static_cast<std::size_t>(threads));
   out.halo_build = pairs.build;
+  out.written.resize(static_cast<std::size_t>(threads));
   const auto run_blocks = [&](int first, int stride) {
+    if (new_halos) {
+      for (int t = first; t < threads; t += stride) {
+        const auto b = static_cast<std::size_t>(t);
+        find_halo(pairs, out.first_row[b], out.first_row[b + 1], out.halo_mark[b], out.halo[b]);
+      }
+      if (stride > 1) wait_for_all_threads();  // each block reads the halos of the blocks before it
+    }
+    // Before the barrier, each block writes the records that earlier blocks' pairs reach (from its
+    // first row on); the padding record goes to the last block. Its own sums start at zero there.
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
       const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
-      fill_records(f, eos, r0, r1, out);
-      if (new_halos) find_halo(pairs, r0, r1, out.halo_mark[b], out.halo[b]);
-      // A block's sums need zeros only where its pairs add: its rows, its halo and the padding.
+      int reached = r0;
+      for (std::size_t s = 0; s < b; ++s) {
+        const auto& halo = out.halo[s];
+        const auto past = std::lower_bound(halo.begin(), halo.end(), r1);
+        if (past != halo.begin() && *(past - 1) >= r0) reached = std::max(reached, *(past - 1) + 1);
+      }
+      fill_records(f, eos, r0, reached, out);
+      out.written[b] = reached;
+      if (r1 == n) {
+        out.records.col(n).setZero();
+        out.records.col(n).segment<3>(kPosition).setConstant(kFarAway_m);
+      }
       auto& sums = out.thread_sums[b];
       sums.resize(kSum, n + 1);
-      sums.middleCols(r0, r1 - r0).setZero();
-      for (int j : out.halo[b]) sums.col(j).setZero();
       sums.col(n).setZero();
     }
-    if (stride > 1) wait_for_all_threads();  // every record is written before any block reads them
-    for (int t = first; t < threads; t += stride)
-      add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), out.first_row[static_cast<std::size_t>(t)],
-                     out.first_row[static_cast<std::size_t>(t) + 1],
-                     out.thread_sums[static_cast<std::size_t>(t)].data());
+    if (stride > 1) wait_for_all_threads();  // every record another block reads is written
+    for (int t = first; t < threads; t += stride) {
+      const auto b = static_cast<std::size_t>(t);
+      add_block(f, pairs, kernel, eos, viscosity_Pa_s, out.first_row[b], out.first_row[b + 1], out.written[b], out,
+                out.thread_sums[b]);
+    }
   };
   if (threads == 1)
     run_blocks(0, 1);

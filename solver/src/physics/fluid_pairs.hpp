@@ -26,6 +26,7 @@ struct FluidRates {
   std::vector<std::vector<int>> halo;
   std::vector<std::vector<char>> halo_mark;
   long halo_build = -1;
+  std::vector<int> written;  // block t wrote records [first_row[t], written[t]) before the barrier
 };
 
 // Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
