@@ -3,7 +3,10 @@
 // the pair list must change nothing beyond round-off.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "parallel/threads.hpp"
 #include "physics/fluid_pairs.hpp"
@@ -34,6 +37,47 @@ FluidParticles random_fluid(int n_side, double dx, unsigned seed) {
 
 }  // namespace
 
+// Eqs 3 and 4 (Morris' form) and 10 written out here rather than taken from sph_terms.hpp, one pair
+// at a time over every pair within the kernel support.
+struct PlainSums {
+  Eigen::Matrix3Xd force;
+  Eigen::VectorXd drho;
+  int pairs_in_support = 0;
+};
+
+PlainSums plain_pair_sums(const FluidParticles& f, const CubicSplineKernel& kernel, const EquationOfState& eos,
+                          double viscosity) {
+  const Eigen::Index n = f.size();
+  PlainSums s{Eigen::Matrix3Xd::Zero(3, n), Eigen::VectorXd::Zero(n)};
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      const Eigen::Vector3d xij = f.x.col(i) - f.x.col(j), vij = f.v.col(i) - f.v.col(j);
+      if (xij.norm() >= kernel.support()) continue;
+      ++s.pairs_in_support;
+      const double g = kernel.dW_dr_over_r(xij.norm());
+      const double Ai = eos.pressure(f.rho[i]) / (f.rho[i] * f.rho[i]), Aj = eos.pressure(f.rho[j]) / (f.rho[j] * f.rho[j]);
+      const Eigen::Vector3d fij = -f.m[i] * f.m[j] * (Ai + Aj) * g * xij +
+                                  f.m[i] * f.m[j] * 2 * viscosity / (f.rho[i] * f.rho[j]) * g * vij;
+      s.force.col(i) += fij;
+      s.force.col(j) -= fij;
+      s.drho[i] += f.m[j] * g * vij.dot(xij);
+      s.drho[j] += f.m[i] * g * vij.dot(xij);
+    }
+  return s;
+}
+
+// The loop's rates equal the plain sums to round-off, and its pressures are the EOS's.
+void expect_plain_sums(const FluidParticles& f, const EquationOfState& eos, const FluidRates& rates,
+                       const PlainSums& plain) {
+  ASSERT_FALSE(rates.force.hasNaN() || rates.drho_dt.hasNaN());  // maxCoeff below would pass over a NaN
+  const double force_scale = plain.force.colwise().norm().maxCoeff(), drho_scale = plain.drho.cwiseAbs().maxCoeff();
+  ASSERT_GT(force_scale, 0.0);
+  ASSERT_GT(drho_scale, 0.0);
+  EXPECT_LT((rates.force - plain.force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
+  EXPECT_LT((rates.drho_dt - plain.drho).cwiseAbs().maxCoeff(), 1e-12 * drho_scale);
+  for (Eigen::Index i = 0; i < f.size(); ++i) EXPECT_DOUBLE_EQ(rates.pressure[i], eos.pressure(f.rho[i])) << i;
+}
+
 TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
   const double dx = 7.7e-6, viscosity = 0.1;
   const FluidParticles f = random_fluid(7, dx, 21);
@@ -43,34 +87,42 @@ TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
   lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
   FluidRates rates;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, rates);
+  const PlainSums plain = plain_pair_sums(f, kernel, eos, viscosity);
+  ASSERT_GT(plain.pairs_in_support, 2000);
+  ASSERT_GT(lists.fluid_fluid().pairs, static_cast<std::size_t>(plain.pairs_in_support));  // the skin lists more
+  expect_plain_sums(f, eos, rates, plain);
+}
 
-  const Eigen::Index n = f.size();
-  Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, n);
-  Eigen::VectorXd drho = Eigen::VectorXd::Zero(n);
-  int pairs_in_support = 0;
-  for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = i + 1; j < n; ++j) {
-      const Eigen::Vector3d xij = f.x.col(i) - f.x.col(j), vij = f.v.col(i) - f.v.col(j);
-      if (xij.norm() >= kernel.support()) continue;
-      ++pairs_in_support;
-      const double g = kernel.dW_dr_over_r(xij.norm());
-      const double Ai = eos.pressure(f.rho[i]) / (f.rho[i] * f.rho[i]), Aj = eos.pressure(f.rho[j]) / (f.rho[j] * f.rho[j]);
-      // Eqs 3 and 4 (Morris' form) and 10, written out here rather than taken from sph_terms.hpp.
-      const Eigen::Vector3d fij = -f.m[i] * f.m[j] * (Ai + Aj) * g * xij +
-                                  f.m[i] * f.m[j] * 2 * viscosity / (f.rho[i] * f.rho[j]) * g * vij;
-      force.col(i) += fij;
-      force.col(j) -= fij;
-      drho[i] += f.m[j] * g * vij.dot(xij);
-      drho[j] += f.m[i] * g * vij.dot(xij);
-    }
-  ASSERT_GT(pairs_in_support, 2000);
-  ASSERT_GT(lists.fluid_fluid().pairs, static_cast<std::size_t>(pairs_in_support));  // the skin lists more
-  const double force_scale = force.colwise().norm().maxCoeff(), drho_scale = drho.cwiseAbs().maxCoeff();
-  ASSERT_GT(force_scale, 0.0);
-  ASSERT_GT(drho_scale, 0.0);
-  EXPECT_LT((rates.force - force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
-  EXPECT_LT((rates.drho_dt - drho).cwiseAbs().maxCoeff(), 1e-12 * drho_scale);
-  for (Eigen::Index i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(rates.pressure[i], eos.pressure(f.rho[i])) << i;
+// Rows go 256 at a time, each chunk writing the records its pairs reach just before it; a thread's
+// pairs also reach the next block's first records, written before the barrier. With blocks of many
+// chunks every record must still be written before it is read, and every sum zeroed before it adds.
+TEST(FluidPairs, ChunksOfRowsInEveryThreadBlockAgreeWithAPlainSum) {
+  const double dx = 7.7e-6, viscosity = 0.1;
+  const FluidParticles f = random_fluid(14, dx, 3);  // 2744 particles: 4 blocks of 2-3 chunks
+  const CubicSplineKernel kernel(1.3 * dx);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  NeighbourLists lists(0.2 * dx);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const PlainSums plain = plain_pair_sums(f, kernel, eos, viscosity);
+  // One block; four blocks on four threads; four on one thread, in turn (block 0 reads block 1's
+  // first records before block 1 runs, so they must have been written before the barrier).
+  for (const auto& [threads, on_one_thread] : {std::pair{1, false}, std::pair{4, false}, std::pair{4, true}}) {
+    if (threads > 1 && !built_with_openmp()) continue;
+#ifdef _OPENMP
+    const int levels = omp_get_max_active_levels();
+    if (on_one_thread) omp_set_max_active_levels(0);
+#endif
+    FluidRates rates;
+    // A record read before it is written, or a sum added to before it is zeroed, shows as NaN.
+    rates.records.setConstant(12, f.size() + 1, std::nan(""));
+    rates.thread_sums.assign(static_cast<std::size_t>(threads), Eigen::Matrix4Xd::Constant(4, f.size() + 1, std::nan("")));
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, threads, rates);
+#ifdef _OPENMP
+    omp_set_max_active_levels(levels);
+#endif
+    SCOPED_TRACE(std::to_string(threads) + (on_one_thread ? " blocks on one thread" : " blocks"));
+    expect_plain_sums(f, eos, rates, plain);
+  }
 }
 
 TEST(FluidPairs, ListRowsArePaddedToWholeLanesWithAnIndexPastTheFluid) {
