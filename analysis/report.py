@@ -33,12 +33,13 @@ def figure_list(config, figure_files, here):
 
 
 def cell_text(value):
-    """A table cell's text: numbers to 4 significant digits, whole numbers (counts) in full, NaN as
-    empty, names as they are."""
+    """A table cell's text: numbers to 4 significant digits, whole numbers (counts) and numbers of
+    10 000 and more in full (a force of 10690 uN, not 1.069e+04), NaN as empty, names as they are."""
     if isinstance(value, float):
         if value != value:
             return ""
-        return f"{value:.0f}" if value.is_integer() and abs(value) < 1e15 else f"{value:.4g}"
+        in_full = (value.is_integer() or abs(value) >= 1e4) and abs(value) < 1e15
+        return f"{value:.0f}" if in_full else f"{value:.4g}"
     return html.escape(str(value))
 
 

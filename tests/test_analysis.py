@@ -280,6 +280,8 @@ def test_shrinkage_figure_draws_cells_tissues_and_reference_lines(config, root):
 def test_table_cells_print_counts_in_full_and_measures_to_four_digits():
     from analysis.report import cell_text
     assert cell_text(13824.0) == "13824"  # a bond count, not 1.382e+04
+    assert cell_text(10690.4) == "10690"  # a peak force in uN, not 1.069e+04
+    assert cell_text(-12345.6) == "-12346"
     assert cell_text(0.52604) == "0.526"
     assert cell_text(189.5029) == "189.5"
     assert cell_text(float("nan")) == ""
