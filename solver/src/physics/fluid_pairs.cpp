@@ -121,6 +121,20 @@ int last_reached(const PairList& pairs, int i) {
   return i;
 }
 
+// One past the last record of block t that the pairs of blocks before it reach (their halos), or the
+// block's first row if they reach none of it.
+int reached_by_earlier_blocks(const FluidRates& out, int t) {
+  const auto b = static_cast<std::size_t>(t);
+  const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
+  int reached = r0;
+  for (std::size_t s = 0; s < b; ++s) {
+    const auto& halo = out.halo[s];
+    const auto past = std::lower_bound(halo.begin(), halo.end(), r1);
+    if (past != halo.begin() && *(past - 1) >= r0) reached = std::max(reached, *(past - 1) + 1);
+  }
+  return reached;
+}
+
 // Rows [r0, r1) of one block, a chunk at a time: each chunk first writes the records (from r0 on,
 // those not written before the barrier: from `written`) and zeroes the sums its pairs reach, then
 // adds its pairs. A record is thus written just before its first use and is still in cache when the
@@ -194,17 +208,12 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
       }
       if (stride > 1) wait_for_all_threads();  // each block reads the halos of the blocks before it
     }
-    // Before the barrier, each block writes the records that earlier blocks' pairs reach (from its
-    // first row on); the padding record goes to the last block. Its own sums start at zero there.
+    // Before the barrier, each block writes the records that earlier blocks' pairs reach, and the
+    // last block the padding record; each zeroes its sums' padding column (the rest go chunk by chunk).
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
       const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
-      int reached = r0;
-      for (std::size_t s = 0; s < b; ++s) {
-        const auto& halo = out.halo[s];
-        const auto past = std::lower_bound(halo.begin(), halo.end(), r1);
-        if (past != halo.begin() && *(past - 1) >= r0) reached = std::max(reached, *(past - 1) + 1);
-      }
+      const int reached = reached_by_earlier_blocks(out, t);
       fill_records(f, eos, r0, reached, out);
       out.written[b] = reached;
       if (r1 == n) {
