@@ -1,5 +1,6 @@
-// Compression continued from a dried state (--from) equals one uninterrupted run, bit for bit;
-// a state dried with other parameters is refused.
+// A run continued from a saved state (--from) equals one uninterrupted run, bit for bit: compression
+// from a dried state, and drying from a state at rest settled at another dryness; a state saved with
+// other parameters is refused.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,14 +34,16 @@ std::vector<double> dataset(const std::string& file, const std::string& name) {
 
 }  // namespace
 
-// Runs case_json whole, then dried and continued with --from; the named datasets must match byte
-// for byte. Returns the scratch directory's continued result.
+// Runs case_json whole, then saved with `save` (by default: dried) and continued with --from; the named
+// datasets must match byte for byte. Returns the scratch directory's continued result.
 std::string expect_continued_run_equals_one_run(ScratchDir& dir, const char* case_json,
-                                                const std::vector<std::string>& names) {
+                                                const std::vector<std::string>& names,
+                                                const std::vector<std::string>& save = {"--set", "compression.steps=0"}) {
   const auto c = dir.write("case.json", case_json);
+  std::vector<std::string> save_run{"run", c, "-o", dir.file("dried.h5"), "--quiet"};
+  save_run.insert(save_run.end(), save.begin(), save.end());
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"run", c, "-o", dir.file("whole.h5"), "--quiet"},
-        {"run", c, "-o", dir.file("dried.h5"), "--set", "compression.steps=0", "--quiet"},
+       {std::vector<std::string>{"run", c, "-o", dir.file("whole.h5"), "--quiet"}, save_run,
         {"run", c, "--from", dir.file("dried.h5"), "-o", dir.file("continued.h5"), "--quiet"}}) {
     const auto r = run_cli(args, dir);
     if (r.exit_code != 0) {
@@ -73,6 +76,40 @@ TEST(Continue, FromDriedStateIsBitIdenticalToOneRun) {
   EXPECT_EQ(stage.back(), 1.0);
   const auto force = dataset(continued, "timeseries/plate_force_top_N");
   EXPECT_GT(force.back(), 0.0);  // the plate reached the cell
+}
+
+// The workflow settles once per cell and dries it to every dryness from there: a state at rest
+// (drying.steps = 0) settled at X/X0 = 1 gives the same half-dried and compressed cell, and the
+// same settle report, as one run at X/X0 = 0.5.
+TEST(Continue, DryingFromAStateAtRestIsBitIdenticalToOneRun) {
+  ScratchDir dir("continue-rest");
+  const auto continued = expect_continued_run_equals_one_run(
+      dir, kSmallCase,
+      {"timeseries/time_s", "timeseries/mean_pressure_Pa", "timeseries/volume_m3", "timeseries/fluid_mass_kg",
+       "timeseries/plate_force_top_N", "state/wall_positions", "state/fluid_positions", "state/fluid_mass"},
+      {"--set", "drying.dryness=1", "--set", "drying.steps=0", "--set", "compression.steps=0"});
+  if (continued.empty()) return;
+  const auto volume = dataset(continued, "timeseries/volume_m3");
+  ASSERT_GT(volume.size(), 2u);
+  EXPECT_LT(volume.back(), 0.9 * volume.front());  // it did dry (to X/X0 = 0.5), from the state at rest
+  h5::Handle whole = h5::open_file_readonly(dir.file("whole.h5")), cont = h5::open_file_readonly(continued);
+  EXPECT_GT(h5::get_attr_int(cont.id(), "settle_iterations"), 0);
+  EXPECT_EQ(h5::get_attr_int(whole.id(), "settle_iterations"), h5::get_attr_int(cont.id(), "settle_iterations"));
+  for (const char* attribute : {"settle_residual", "settle_mass_ratio", "settle_volume_ratio"})
+    EXPECT_EQ(h5::get_attr_double(whole.id(), attribute), h5::get_attr_double(cont.id(), attribute)) << attribute;
+}
+
+// A state at rest may differ from the case in the dryness and the drying's length only.
+TEST(Continue, RefusesAStateAtRestSettledWithOtherParameters) {
+  ScratchDir dir("continue-rest-mismatch");
+  const auto c = dir.write("case.json", kSmallCase);
+  ASSERT_EQ(run_cli({"run", c, "-o", dir.file("rest.h5"), "--set", "drying.steps=0", "--set", "compression.steps=0", "--quiet"}, dir)
+                .exit_code,
+            0);
+  const auto r = run_cli({"run", c, "--from", dir.file("rest.h5"), "-o", dir.file("out.h5"), "--set", "cell.turgor_kPa=300"}, dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("settled with cell.turgor_kPa"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
 }
 
 // Two bonded cells (of the reduced tissue's 642 wall particles: 402 are too few to keep a faceted

@@ -20,7 +20,7 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--from DRIED.h5] [--threads N] [--quiet]\n"
+    "  cellsim run CASE.json -o OUT.h5 [--set key=value ...] [--from SAVED.h5] [--threads N] [--quiet]\n"
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
     "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--threads N] [--sizes] [--set ...]\n"
     "                                                    median ms/step, per phase; --sizes: at the three\n"
@@ -30,8 +30,9 @@ const char* kUsage =
     "  cellsim outputs                                   the time series written (Markdown table)\n"
     "  cellsim --help | --version\n"
     "\n"
-    "--from starts the compression stage from the end-of-drying state in DRIED.h5 (a run of the\n"
-    "same case with compression.steps = 0); the output then holds the whole history.\n"
+    "--from continues from the last state in SAVED.h5, a run of the same case: the end of drying (a run\n"
+    "with compression.steps = 0) is compressed; a cell at rest (drying.steps = 0 too) is dried, and\n"
+    "may differ in drying.dryness and drying.steps. The output holds the whole history.\n"
     "--threads N shares every phase of the step among N threads (default 1: a workflow runs one job\n"
     "per core); results are bit-identical for the same N and agree to round-off between counts.\n"
     "Keys use units in their names, e.g. --set drying.dryness=0.5 --set wall.G_MPa=0.18.\n"

@@ -42,16 +42,25 @@ void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(con
   }
 }
 
-// A saved state may seed this case only if everything that shapes drying is the same.
-void check_same_drying(const nlohmann::json& saved, const nlohmann::json& now, const std::string& from) {
+// The keys a saved state may differ in from this case: compression and output act only after the
+// end of drying. A state at rest (a run with drying.steps = 0) may also differ in the dryness and the
+// length of drying: at t = 0 the drying ramp is 0 (drying.hpp), so the settle does not see them.
+bool may_differ(const std::string& section, const std::string& key, bool at_rest) {
+  if (section == "compression" || section == "output") return true;
+  return at_rest && section == "drying" && (key == "dryness" || key == "steps");
+}
+
+// A saved state may seed this case only if everything that shaped it is the same.
+void check_same_start(const nlohmann::json& saved, const nlohmann::json& now, const std::string& from, bool at_rest) {
   for (const auto& [section, keys] : now.items()) {
-    if (section == "compression" || section == "output") continue;
     for (const auto& [key, value] : keys.items()) {
+      if (may_differ(section, key, at_rest)) continue;
       const nlohmann::json& old = saved.contains(section) && saved[section].contains(key) ? saved[section][key]
                                                                                           : nlohmann::json();
       if (old != value)
-        throw InputError("--from '" + from + "' was dried with " + section + "." + key + " = " + old.dump() +
-                         ", but this case has " + value.dump() + "; dry again or match the case");
+        throw InputError("--from '" + from + "' was " + (at_rest ? "settled" : "dried") + " with " + section + "." +
+                         key + " = " + old.dump() + ", but this case has " + value.dump() +
+                         "; run it again or match the case");
     }
   }
 }
@@ -61,13 +70,16 @@ void check_same_drying(const nlohmann::json& saved, const nlohmann::json& now, c
 void run_case(Params p, const RunOptions& options) {
   const Tissue tissue = build_tissue(p);  // fills in derived parameters
   const nlohmann::json resolved = case_to_json(p);
-  SavedRun dried;
+  // --from: a state at rest (step 0: settled, not dried) starts drying; the end of drying, compression.
+  SavedRun saved;
+  bool from_rest = false;
   if (!options.from_path.empty()) {
-    dried = read_saved_run(options.from_path);
-    check_same_drying(nlohmann::json::parse(dried.case_json), resolved, options.from_path);
-    if (dried.state.stage != Stage::Drying)
+    saved = read_saved_run(options.from_path);
+    if (saved.state.stage != Stage::Drying)
       throw InputError("--from '" + options.from_path + "' holds a state in compression, not the end of drying "
                        "(run the case with compression.steps = 0)");
+    from_rest = saved.state.step == 0;
+    check_same_start(nlohmann::json::parse(saved.case_json), resolved, options.from_path, from_rest);
   }
   Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);
@@ -77,7 +89,7 @@ void run_case(Params p, const RunOptions& options) {
 
   std::vector<Record> records;
   DryingSummary drying;
-  const std::int64_t drying_steps = options.from_path.empty() ? p.drying_steps : 0;
+  const std::int64_t drying_steps = options.from_path.empty() || from_rest ? p.drying_steps : 0;
   const auto strain_reached = [&](const Record*) { return p.end_strain && sim.nominal_strain() >= *p.end_strain; };
   const SteadyStateCriterion steady = steady_state_criterion(p);
   const auto steady_reached = [&](const Record* recorded) {
@@ -94,10 +106,20 @@ void run_case(Params p, const RunOptions& options) {
                      static_cast<long long>(drying.settle.iterations), p.turgor_Pa / 1e3, drying.settle.residual,
                      drying.settle.mass_ratio);
       records.push_back(sim.record());
+    } else if (from_rest) {
+      // The settled state, rates and record as the settle above would leave them (restore() builds
+      // the lists and rates anew, as settle's start_at_rest() does): the same bits.
+      sim.restore(saved.state);
+      drying.settle = saved.drying.settle;
+      records.push_back(sim.record());
+      if (!options.quiet)
+        std::fprintf(stderr, "cellsim: settle: the state at rest from %s (%lld pseudo-steps, residual %.2g)\n",
+                     options.from_path.c_str(), static_cast<long long>(drying.settle.iterations),
+                     drying.settle.residual);
     } else {
-      sim.restore(dried.state);
-      records = std::move(dried.records);
-      drying = dried.drying;
+      sim.restore(saved.state);
+      records = std::move(saved.records);
+      drying = saved.drying;
     }
     out.write_snapshot(sim.state(), sim.eos());
     Progress progress(drying_steps + p.compression_steps, p.progress_interval_s, options.quiet);

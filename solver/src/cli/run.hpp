@@ -8,7 +8,7 @@ namespace cellsim {
 
 struct RunOptions {
   std::string output_path;
-  std::string from_path;  // continue from the end-of-drying state in this result file (--from)
+  std::string from_path;  // continue from the last state in this result file, at rest or dried (--from)
   bool quiet = false;     // no progress lines on stderr
   int threads = 1;        // for the fluid pair loop (threads.hpp)
 };
