@@ -29,7 +29,7 @@ include: "workflow/rules/common.smk"
 
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
-localrules: all, build_solver, case_file, dried_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
+localrules: all, build_solver, case_file, dried_case_file, rest_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
     convergence, aggregate_convergence, convergence_page, tissue, aggregate_tissue, tissue_page
 
 

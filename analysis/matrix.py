@@ -8,7 +8,8 @@ from base (so adding such an axis renames no existing case). An axis without a k
 level, say) sets only its `coupled` keys, and its value at base is `base_value`. Coupled keys are
 set after every axis's own key, and a hidden axis's value is read back from the finished case, so
 a name always says what the case runs. The dried state of a case is the same name
-without the axes that only touch the compression stage.
+without the axes that only touch the compression stage; its state at rest (the settled cell it dries
+from) is the dried name without the dryness as well, so that one settle serves every dryness.
 
 A study with a `target` (convergence, tissue) is not part of the default target (`snakemake --cores 2`);
 it runs with `snakemake --cores 2 <target>`.
@@ -28,6 +29,7 @@ class ConfigError(ValueError):
 class Case:
     name: str
     dried: str
+    rest: str                        # the state at rest it dries from (rest_case)
     values: dict                     # axis -> value
     case: dict                       # the full cellsim case (nested, file units)
     studies: list = field(default_factory=list)
@@ -62,6 +64,26 @@ def axis_keys(spec):
 def is_compression_only(spec):
     keys = axis_keys(spec)
     return bool(keys) and all(k.startswith("compression.") for k in keys)
+
+
+# The keys a state at rest may differ in from the drying that continues it (cellsim run --from; at
+# t = 0 the drying ramp is 0, so the settle does not see them): solver/src/cli/run.cpp, may_differ.
+REST_FREE_KEYS = ("drying.dryness", "drying.steps")
+
+
+def is_drying_only(spec):
+    keys = axis_keys(spec)
+    return bool(keys) and all(k in REST_FREE_KEYS for k in keys)
+
+
+def rest_case(case):
+    """The run that settles a case's cell and stops: dryness 1, no drying, no compression (whose keys
+    the settle does not see, so cases that differ only there share it)."""
+    rest = copy.deepcopy(case)
+    set_key(rest, "drying.dryness", 1.0)
+    set_key(rest, "drying.steps", 0)
+    rest["compression"] = {"steps": 0}
+    return rest
 
 
 def base_value(config, axis):
@@ -183,6 +205,12 @@ def dried_name(config, values):
                     if not is_compression_only(spec) and _named(config, values, axis, spec))
 
 
+def rest_name(config, values):
+    return "_".join(spec["label"] + fmt(values[axis]) for axis, spec in _by_label(config)
+                    if not is_compression_only(spec) and not is_drying_only(spec)
+                    and _named(config, values, axis, spec)) or "base"
+
+
 def expand(config):
     """All cases of all studies, deduplicated: {name: Case}, in a stable order."""
     axes, base = config["axes"], config["base"]
@@ -205,7 +233,7 @@ def expand(config):
                     values[axis] = get_key(case, axis_spec["key"])
             name = case_name(config, values)
             if name not in cases:
-                cases[name] = Case(name, dried_name(config, values), values, case)
+                cases[name] = Case(name, dried_name(config, values), rest_name(config, values), values, case)
             if study not in cases[name].studies:
                 cases[name].studies.append(study)
     return cases
@@ -216,6 +244,18 @@ def dried_states(cases):
     out = {}
     for case in cases.values():
         out.setdefault(case.dried, case.case)
+    return out
+
+
+def rest_states(cases):
+    """{rest name: case dict of the settle run}: one per distinct cell at rest, whatever dryness follows.
+    Cases that share a name must share the run (a name lists every axis that shapes it)."""
+    out = {}
+    for case in cases.values():
+        rest = rest_case(case.case)
+        if out.setdefault(case.rest, rest) != rest:
+            raise ConfigError(f"cases share the state at rest {case.rest!r} but settle differently "
+                              f"(e.g. {case.name}): give the axis that tells them apart a label")
     return out
 
 

@@ -38,11 +38,13 @@ def test_ci_study_runs_through_slurm(root, tmp_path, cluster):
             assert (out / "figures" / f"{fig}.{ext}").stat().st_size > 10_000, fig
 
     submitted = sorted(logs.glob("*.out"))
+    rests = len(list(out.glob("runs/rest/*.h5")))
     dryings = len(list(out.glob("runs/dried/*.h5")))
     compressions = len(list(out.glob("runs/*.h5")))
-    assert compressions == 48 and dryings == 39
-    # Every drying is its own job; compressions go in groups of up to 8 (a few more if not packed tight).
-    assert dryings + compressions // 8 <= len(submitted) < dryings + compressions
+    assert compressions == 48 and dryings == 39 and rests == 10
+    # Every settle and drying is its own job; compressions go in groups of up to 8 (a few more if not
+    # packed tight).
+    assert rests + dryings + compressions // 8 <= len(submitted) < rests + dryings + compressions
     controller_log = (cluster.dir / "log" / "slurmctld.log").read_text()
     completed = set(re.findall(r"_job_complete: JobId=(\d+) done", controller_log))
     ids = {re.search(r"-(\d+)\.out$", p.name).group(1) for p in submitted}

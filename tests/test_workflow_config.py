@@ -6,6 +6,8 @@ import subprocess
 import pytest
 import yaml
 
+from analysis import matrix
+
 SNAKEMAKE = ["snakemake", "--nolock", "-n", "--cores", "2"]
 
 
@@ -27,11 +29,39 @@ def test_default_config_plans_every_case_and_figure(root, tmp_path):
     done = dry_run(root, "--config", f"output_dir={tmp_path}")
     assert done.returncode == 0, done.stderr
     counts = job_counts(done.stdout)
-    # 18 + 9 + 6 + 12 + 3 distinct cases; plate speed shares its dried states: 39 dryings.
+    # 18 + 9 + 6 + 12 + 3 distinct cases; plate speed shares its dried states: 39 dryings. Every
+    # dryness of a cell dries from one settle: 3 turgors, 2 other G, 4 other thicknesses, 1 other size.
     assert counts["compress"] == 48
     assert counts["dry"] == 39
+    assert counts["settle"] == counts["rest_case_file"] == 10
     assert counts["figure"] == 18
     assert counts["report"] == 1 and counts["aggregate"] == 1
+
+
+def test_each_drying_starts_from_a_rest_state_that_differs_only_where_the_settle_cannot_see(root):
+    """What the solver allows (--from a state at rest: dryness, drying steps, compression, output) is
+    all that separates a dried case from its rest case; and a dryness axis does not split rest states."""
+    config = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    cases = matrix.expand(config)
+    rests = matrix.rest_states(cases)
+    for case in cases.values():
+        rest = rests[case.rest]
+        assert rest["drying"]["steps"] == 0 and rest["compression"] == {"steps": 0}
+        differ = {f"{section}.{key}" for section in case.case for key in case.case[section]
+                  if case.case[section][key] != rest.get(section, {}).get(key)}
+        assert differ <= {"drying.dryness", "drying.steps"} | {f"compression.{k}" for k in case.case["compression"]}
+        assert not any(p.startswith("X") for p in case.rest.split("_")) and case.dried.startswith(case.rest)
+    dried_per_rest = {}
+    for case in cases.values():
+        dried_per_rest.setdefault(case.rest, set()).add(case.dried)
+    assert len(dried_per_rest["D150_G18_P200_t6"]) == 6  # the baseline cell, at 1.0, 0.9, ... 0.1
+
+
+def test_cases_that_would_share_a_rest_state_but_settle_differently_are_refused():
+    a = matrix.Case("a_X1", "a_X1", "a", {}, {"cell": {"turgor_kPa": 200}, "drying": {}, "compression": {}})
+    b = matrix.Case("a_X0.5", "a_X0.5", "a", {}, {"cell": {"turgor_kPa": 300}, "drying": {}, "compression": {}})
+    with pytest.raises(matrix.ConfigError, match="'a'"):
+        matrix.rest_states({"a_X1": a, "a_X0.5": b})
 
 
 def write_config(tmp_path, change):

@@ -8,13 +8,15 @@ from analysis import matrix  # noqa: E402
 
 try:
     matrix.check(config, workflow.basedir)
+    CASES = matrix.expand(config)  # {case name: Case}, of every target
+    REST = matrix.rest_states(CASES)  # {rest name: case dict}: a cell settled, one per dryness axis
 except matrix.ConfigError as error:
     raise WorkflowError(f"config: {error}")
 
 OUT = config["output_dir"]
 SOLVER = "build/solver/cellsim"
-CASES = matrix.expand(config)  # {case name: Case}, of every target
 DRIED = matrix.dried_states(CASES)  # {dried name: case dict}
+REST_OF = {case.dried: case.rest for case in CASES.values()}  # dried name -> its state at rest
 # The default target runs the studies without a `target`; the others (e.g. convergence) their own.
 DEFAULT_CASES = matrix.target_cases(config, CASES)
 FIGURES = matrix.target_figures(config)
@@ -39,3 +41,7 @@ def run_file(case):
 
 def dried_file(dried):
     return f"{OUT}/runs/dried/{dried}.h5"
+
+
+def rest_file(rest):
+    return f"{OUT}/runs/rest/{rest}.h5"
