@@ -18,12 +18,14 @@ std::size_t BenchResult::median_repeat() const {
   return order[order.size() / 2];
 }
 
-BenchResult measure_steps(const Params& case_params, long steps, int repeats, int threads) {
+BenchResult measure_steps(const Params& case_params, long steps, int repeats, int threads, long reference_particles) {
   Params p = case_params;
   const Tissue cell = build_tissue(p);
   BenchResult r;
   r.fluid_particles = cell.fluid_x.cols();
   r.wall_particles = cell.wall_x.cols();
+  if (reference_particles > 0)
+    steps = std::max(100L, steps * reference_particles / (r.fluid_particles + r.wall_particles));
   r.steps = steps;
   r.dt_ns = p.dt_s * 1e9;
   r.threads = threads;
@@ -71,18 +73,29 @@ void print_benchmark(const BenchResult& r) {
                 100.0 * phases[static_cast<std::size_t>(ph)] / m);
 }
 
-std::vector<std::string> resolution_level_overrides(const Params& p, int level) {
-  const double fluid_factor = std::pow(2.0, 1.5 * (level - 1)), wall_factor = std::pow(2.0, level - 1);
-  const double dt_ns = p.dt_s * 1e9 * (level >= 3 ? 0.5 : 1.0);
-  char dt[64];
-  std::snprintf(dt, sizeof dt, "%.17g", dt_ns);
-  return {"cell.n_fluid=" + std::to_string(std::lround(static_cast<double>(p.n_fluid) * fluid_factor)),
-          "cell.n_wall=" + std::to_string(std::lround(static_cast<double>(p.n_wall) * wall_factor)),
-          std::string("time.dt_ns=") + dt};
+std::vector<BenchSize> bench_sizes(const Params& p) {
+  std::vector<BenchSize> sizes;
+  for (int level : {1, 2, 3}) {
+    const double fluid_factor = std::pow(2.0, 1.5 * (level - 1)), wall_factor = std::pow(2.0, level - 1);
+    char dt[64];
+    std::snprintf(dt, sizeof dt, "%.17g", p.dt_s * 1e9 * (level >= 3 ? 0.5 : 1.0));
+    sizes.push_back({"L" + std::to_string(level),
+                     {"cell.n_fluid=" + std::to_string(std::lround(static_cast<double>(p.n_fluid) * fluid_factor)),
+                      "cell.n_wall=" + std::to_string(std::lround(static_cast<double>(p.n_wall) * wall_factor)),
+                      std::string("time.dt_ns=") + dt}});
+  }
+  // Plates one cell wider than the tissue, as the tissue study's (they act only in compression).
+  for (int k : {2, 3}) {
+    const std::string n = std::to_string(k), plate_um = std::to_string(std::lround((k + 1) * p.diameter_m * 1e6));
+    sizes.push_back({n + "x" + n + "x" + n,
+                     {"tissue.cells_x=" + n, "tissue.cells_y=" + n, "tissue.cells_z=" + n,
+                      "compression.plate_length_um=" + plate_um, "compression.plate_width_um=" + plate_um}});
+  }
+  return sizes;
 }
 
-void print_size_table(const std::vector<int>& levels, const std::vector<BenchResult>& results) {
-  std::printf("%5s %7s %6s %7s %7s %6s %24s %9s %12s %8s\n", "level", "fluid", "wall", "dt_ns", "threads", "steps",
+void print_size_table(const std::vector<std::string>& labels, const std::vector<BenchResult>& results) {
+  std::printf("%5s %7s %6s %7s %7s %6s %26s %9s %12s %8s\n", "size", "fluid", "wall", "dt_ns", "threads", "steps",
               "ms/step median (range)", "M p-st/s", "ns/p-step", "speed-up");
   double one_thread_ms = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -92,12 +105,12 @@ void print_size_table(const std::vector<int>& levels, const std::vector<BenchRes
     std::snprintf(range, sizeof range, "%.4f (%.4f-%.4f)", r.median_ms(),
                   *std::min_element(r.ms_per_step.begin(), r.ms_per_step.end()),
                   *std::max_element(r.ms_per_step.begin(), r.ms_per_step.end()));
-    std::printf("%5d %7ld %6ld %7.3g %7d %6ld %24s %9.2f %12.1f %8.2f\n", levels[i], r.fluid_particles,
+    std::printf("%5s %7ld %6ld %7.3g %7d %6ld %26s %9.2f %12.1f %8.2f\n", labels[i].c_str(), r.fluid_particles,
                 r.wall_particles, r.dt_ns, r.threads, r.steps, range, r.million_particle_steps_per_s(),
                 1e3 / r.million_particle_steps_per_s(), one_thread_ms / r.median_ms());
   }
-  std::printf("\nphase, ms/step of the median repeat (L level, T threads):\n%-28s", "");
-  for (std::size_t i = 0; i < results.size(); ++i) std::printf(" %6s%d T%d", "L", levels[i], results[i].threads);
+  std::printf("\nphase, ms/step of the median repeat (size, T threads):\n%-28s", "");
+  for (std::size_t i = 0; i < results.size(); ++i) std::printf(" %7s T%d", labels[i].c_str(), results[i].threads);
   std::printf("\n");
   for (int ph = 0; ph < static_cast<int>(Phase::Count); ++ph) {
     std::string name = kPhaseNames[ph];

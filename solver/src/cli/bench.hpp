@@ -1,7 +1,7 @@
 #pragma once
 // `cellsim bench`: the speed of the step on a case, as the median of repeats, with the time per
-// phase; with --sizes, the same case at the convergence study's three resolution levels, on one
-// thread and on several.
+// phase; with --sizes, the same case at the convergence study's three resolution levels and as tissues
+// of 8 and 27 cells, on one thread and on several.
 #include <array>
 #include <string>
 #include <vector>
@@ -34,15 +34,22 @@ struct BenchResult {
   }
 };
 
-BenchResult measure_steps(const Params& p, long steps, int repeats, int threads);
+// `steps` steps of the case, `repeats` times; with reference_particles > 0, as many fewer steps as it
+// has more particles than that (at least 100), so that every size of `--sizes` takes about as long.
+BenchResult measure_steps(const Params& p, long steps, int repeats, int threads, long reference_particles = 0);
 void print_benchmark(const BenchResult& r);
 
-// The resolution levels of the convergence study (config/config.yaml, axis `resolution`): level L
-// has 2^(3(L-1)/2) times the fluid particles and 2^(L-1) times the wall particles of the case; level
-// 3 also halves the time step. The overrides (for --set) that make level `level` of case p.
-std::vector<std::string> resolution_level_overrides(const Params& p, int level);
+// The sizes of `bench --sizes`: the case at the convergence study's resolution levels (config/config.yaml,
+// axis `resolution`: level L has 2^(3(L-1)/2) times the fluid particles and 2^(L-1) times the wall
+// particles of the case, and level 3 halves the time step), then tissues of 2 x 2 x 2 and 3 x 3 x 3 of
+// its cell (the tissue study's sizes, axis `cells`), each with the overrides (for --set) that make it.
+struct BenchSize {
+  std::string label;  // "L1", "L2", "L3", "2x2x2", "3x3x3"
+  std::vector<std::string> overrides;
+};
+std::vector<BenchSize> bench_sizes(const Params& p);
 
-// One row per (level, thread count), then the phases side by side.
-void print_size_table(const std::vector<int>& levels, const std::vector<BenchResult>& results);
+// One row per (size, thread count), then the phases side by side.
+void print_size_table(const std::vector<std::string>& labels, const std::vector<BenchResult>& results);
 
 }  // namespace cellsim

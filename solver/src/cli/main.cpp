@@ -24,7 +24,8 @@ const char* kUsage =
     "  cellsim validate CASE.json [--set key=value ...]   check a case, print it resolved\n"
     "  cellsim bench [CASE.json] [--steps N] [--repeats R] [--threads N] [--sizes] [--set ...]\n"
     "                                                    median ms/step, per phase; --sizes: at the three\n"
-    "                                                    resolution levels, on 1 and N (at least 2) threads\n"
+    "                                                    resolution levels and as tissues of 8 and 27 cells,\n"
+    "                                                    on 1 and N (at least 2) threads\n"
     "  cellsim params                                    the case keys (Markdown table)\n"
     "  cellsim schema                                    JSON Schema of the case file\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
@@ -101,8 +102,8 @@ cellsim::Params load(const Args& a, bool baseline = false) {
   return cellsim::validate_case(doc);
 }
 
-// `cellsim bench`: one case, or with --sizes the case at the three resolution levels (steps scaled
-// down with the size, at least 100), each on one thread and on max(2, --threads).
+// `cellsim bench`: one case, or with --sizes the case at the three resolution levels and as tissues of
+// 8 and 27 cells (steps scaled down with the size, at least 100), each on one thread and on max(2, --threads).
 void bench(const Args& a) {
   const cellsim::Params p = load(a, /*baseline=*/true);
   if (!a.sizes) {
@@ -111,22 +112,19 @@ void bench(const Args& a) {
   }
   std::vector<int> thread_counts{1};
   if (cellsim::built_with_openmp()) thread_counts.push_back(std::max(2, a.threads));
-  std::vector<int> levels;
+  std::vector<std::string> labels;
   std::vector<cellsim::BenchResult> results;
-  for (int level : {1, 2, 3}) {
-    Args at_level = a;
-    for (const auto& o : cellsim::resolution_level_overrides(p, level)) at_level.overrides.push_back(o);
-    const cellsim::Params lp = load(at_level, /*baseline=*/true);
-    const long steps = std::max(100L, a.steps * (p.n_fluid + p.n_wall) / (lp.n_fluid + lp.n_wall));
+  for (const cellsim::BenchSize& size : cellsim::bench_sizes(p)) {
+    Args sized = a;
+    for (const auto& o : size.overrides) sized.overrides.push_back(o);
+    const cellsim::Params sp = load(sized, /*baseline=*/true);
     for (int threads : thread_counts) {
-      std::cerr << "cellsim bench: level " << level << " (" << lp.n_fluid << " fluid + " << lp.n_wall
-                << " wall particles), " << threads << " thread" << (threads == 1 ? "" : "s") << ", " << steps
-                << " steps x " << a.repeats << " repeats\n";
-      levels.push_back(level);
-      results.push_back(cellsim::measure_steps(lp, steps, a.repeats, threads));
+      std::cerr << "cellsim bench: " << size.label << ", " << threads << " thread" << (threads == 1 ? "" : "s") << "\n";
+      labels.push_back(size.label);
+      results.push_back(cellsim::measure_steps(sp, a.steps, a.repeats, threads, p.n_fluid + p.n_wall));
     }
   }
-  cellsim::print_size_table(levels, results);
+  cellsim::print_size_table(labels, results);
 }
 
 int dispatch(int argc, char** argv) {

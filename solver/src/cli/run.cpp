@@ -129,6 +129,7 @@ void run_case(Params p, const RunOptions& options) {
         std::fprintf(stderr, "cellsim: drying reached steady state at t = %.2f us (step %lld)\n",
                      drying.steady_time_s * 1e6, static_cast<long long>(sim.state().step));
     }
+    drying.dried = drying_steps > 0 || (!options.from_path.empty() && !from_rest);
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
     if (p.compression_steps > 0) {
       sim.start_compression();

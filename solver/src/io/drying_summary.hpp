@@ -10,13 +10,15 @@ namespace cellsim {
 
 struct DryingSummary {
   SettleReport settle;
+  bool dried = true;                // a drying stage ran (here or in the state continued from); not so
+                                    // for a cell only settled (drying.steps = 0), which has no cap to hit
   bool steady = false;              // drying ended at steady state (steady_state.hpp), not at its cap
   double steady_time_s = std::nan("");  // simulated time at which it did
 
   // The warning a run, its file and the report show when drying hit its cap unsteady.
   std::string warning() const {
     std::string w;
-    if (!steady) w += "drying reached drying.steps without a steady state; ";
+    if (dried && !steady) w += "drying reached drying.steps without a steady state; ";
     if (settle.iterations > 0 && !settle.converged) w += "the relaxation at rest stopped at settle.max_iterations; ";
     return w.empty() ? w : w.substr(0, w.size() - 2);
   }
