@@ -9,7 +9,7 @@ from analysis import matrix  # noqa: E402
 try:
     matrix.check(config, workflow.basedir)
     CASES = matrix.expand(config)  # {case name: Case}, of every target
-    REST = matrix.rest_states(CASES)  # {rest name: case dict}: a cell settled, one per dryness axis
+    REST = matrix.rest_states(CASES)  # {rest name: case dict}: each cell settled once, for all its dryness levels
 except matrix.ConfigError as error:
     raise WorkflowError(f"config: {error}")
 
