@@ -1,5 +1,6 @@
 #include "engine/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -107,6 +108,19 @@ void scale(double factor, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd&
 // y += factor * rate, for columns [begin, end) (a wall kick, or a drift).
 void add_scaled(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
   y.middleCols(begin, end - begin) += factor * rate.middleCols(begin, end - begin);
+}
+
+// The drift of columns [begin, end), x += dt v; returns the largest |v|^2, read 256 columns at a time
+// while they are still in cache (the bound on how far the step moved the particles).
+double drift_columns(double dt, const Eigen::Matrix3Xd& v, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& x) {
+  constexpr Eigen::Index kChunk = 256;
+  double v2 = 0;
+  for (Eigen::Index c0 = begin; c0 < end; c0 += kChunk) {
+    const Eigen::Index c1 = std::min(c0 + kChunk, end);
+    add_scaled(dt, v, c0, c1, x);
+    v2 = std::max(v2, v.middleCols(c0, c1 - c0).colwise().squaredNorm().maxCoeff());
+  }
+  return v2;
 }
 
 // The fastest fluid particle and the one with the largest acceleration (squared), for the CFL limits.
@@ -267,7 +281,8 @@ void Simulation::update_geometry() {
 // Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
 void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
-  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_);
+  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_, moved_since_lists_m_);
+  moved_since_lists_m_ = 0;
   timer_.lap(Phase::Neighbours);
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
   timer_.lap(Phase::FluidPairs);
@@ -350,12 +365,14 @@ void Simulation::kick(double half_dt) {
 }
 
 void Simulation::drift(double dt) {
-  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    add_scaled(dt, s_.fluid.v, begin, end, s_.fluid.x);
-  });
-  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    add_scaled(dt, s_.wall.v, begin, end, s_.wall.x);
-  });
+  const auto largest = [](double a, double b) { return std::max(a, b); };
+  const double fluid_v2 = reduce_blocks<double>(
+      threads_, s_.fluid.size(),
+      [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.fluid.v, begin, end, s_.fluid.x); }, largest);
+  const double wall_v2 = reduce_blocks<double>(
+      threads_, s_.wall.size(),
+      [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.wall.v, begin, end, s_.wall.x); }, largest);
+  moved_since_lists_m_ += dt * std::sqrt(std::max(fluid_v2, wall_v2));
   s_.time_s += dt;
   Plates& plates = s_.plates;
   if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);

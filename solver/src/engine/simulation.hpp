@@ -3,6 +3,7 @@
 // (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
 // -> fluid forces -> wall forces -> forces between cells -> wall-fluid forces -> plates -> integrate
 // -> checks.
+#include <cmath>
 #include <string>
 
 #include "core/params.hpp"
@@ -36,7 +37,13 @@ class Simulation {
   double nominal_strain() const;     // (H_c - H) / H_c during compression, 0 before
 
   const State& state() const { return s_; }
-  State& mutable_state() { return s_; }
+  // A step's neighbour lists trust that only its drift moved the particles since the last step (and
+  // skip their pass over the positions while the drifts leave the skin unused). This forgets that, for
+  // the next step; after moving particles through a reference kept from an earlier call, call it again.
+  State& mutable_state() {
+    moved_since_lists_m_ = INFINITY;
+    return s_;
+  }
   const WallMesh& mesh() const { return mesh_; }
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
@@ -54,7 +61,10 @@ class Simulation {
 
   // For the relaxation at rest (settle.hpp): forces at the current positions, and the restart of
   // the clock once the cell is at rest (t = 0, velocities zero, D0 of Eq 6 and M_f0 taken anew).
-  void refresh_rates() { compute_rates(); }
+  void refresh_rates() {
+    moved_since_lists_m_ = INFINITY;  // the settle moves the particles itself
+    compute_rates();
+  }
   const Eigen::Matrix3Xd& fluid_force() const { return fluid_.force; }
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
   double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
@@ -110,6 +120,7 @@ class Simulation {
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double wall_spring_dt_limit_s_;
+  double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked
   PhaseTimer timer_;
 };
 

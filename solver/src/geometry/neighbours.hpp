@@ -1,6 +1,7 @@
 #pragma once
 // Verlet neighbour lists with a skin, built from a cell list and reused until some particle has
 // moved far enough (or h has grown enough) that a pair could have entered the cut-off unseen.
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -26,8 +27,12 @@ class NeighbourLists {
   explicit NeighbourLists(double skin_m) : skin_(skin_m) {}
 
   // Rebuilds if needed for these cut-offs; returns true if it rebuilt. threads: as `cellsim run --threads`.
+  // moved_at_most_m: how far any particle can have moved since the last update, if the caller knows
+  // (a step's drift: dt max |v|), else INFINITY. While these bounds, added up since the last look at
+  // the positions, leave the skin unused, no pass over the positions is needed; otherwise the update
+  // measures the largest displacement itself. Either way it rebuilds exactly when it did without them.
   bool update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
-              double wall_fluid_cutoff, int threads = 1);
+              double wall_fluid_cutoff, int threads = 1, double moved_at_most_m = INFINITY);
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
 
@@ -40,6 +45,7 @@ class NeighbourLists {
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
   const PairList& wall_wall() const { return wall_wall_; }      // half list (l > k), of different cells
   long builds() const { return builds_; }
+  long displacement_checks() const { return displacement_checks_; }  // passes over the positions
 
  private:
   void build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads);
@@ -52,8 +58,9 @@ class NeighbourLists {
   std::vector<int> cell_of_fluid_, cell_of_wall_;  // empty: one cell
   double wall_wall_cutoff_ = 0;
   std::vector<PairList> parts_;  // each thread's rows of both lists, while building with threads
-  long builds_ = 0;
-  bool stale_ = true;  // no valid list yet, or invalidated
+  long builds_ = 0, displacement_checks_ = 0;
+  double moved_bound_ = 0;  // no particle has moved farther since the build (valid unless stale_)
+  bool stale_ = true;       // no valid list yet, or invalidated
 };
 
 }  // namespace cellsim
