@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from analysis import aggregate, claims, convergence, matrix, quantities, references
-from analysis.figures import curves
+from analysis.figures import common, curves
 
 
 @pytest.fixture(scope="module")
@@ -286,3 +286,16 @@ def test_table_cells_print_counts_in_full_and_measures_to_four_digits():
     assert cell_text(189.5029) == "189.5"
     assert cell_text(float("nan")) == ""
     assert cell_text("a<b") == "a&lt;b"
+
+
+def test_figures_are_saved_the_same_bytes_every_time(tmp_path):
+    """No creation date in the PDF: a figure redrawn from the same data is the same file."""
+    saved = []
+    for k in range(2):
+        figure, axes = common.plt.subplots()
+        axes.plot([0, 1], [0, 1])
+        png, pdf = tmp_path / f"f{k}.png", tmp_path / f"f{k}.pdf"
+        common.save(figure, png, pdf)
+        saved.append((png.read_bytes(), pdf.read_bytes()))
+    assert b"CreationDate" not in saved[0][1]
+    assert saved[0] == saved[1]

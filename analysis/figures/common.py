@@ -98,6 +98,7 @@ def panel_letter(index):
 
 
 def save(figure, png, pdf):
+    """PNG and PDF; without a creation date, so that the same data give the same bytes."""
     figure.savefig(png, dpi=130, bbox_inches="tight")
-    figure.savefig(pdf, bbox_inches="tight")
+    figure.savefig(pdf, bbox_inches="tight", metadata={"CreationDate": None})
     plt.close(figure)
