@@ -196,7 +196,8 @@ bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix
              (cell_of_wall_.empty() || wall_wall_cutoff_ + moved <= wall_wall_cutoff_ + skin_);
     };
     // The bound holds in exact arithmetic; the margin covers the round-off of the positions (about
-    // 1e-20 m a step) and of the measured displacement, so the bound never lets pass what it would not.
+    // 1e-20 m a step) and of the measured displacement, so the bound keeps the lists only where the
+    // measurement would keep them too.
     moved_bound_ += moved_at_most_m;
     if (lists_hold(moved_bound_ + 1e-6 * skin_)) return false;
     ++displacement_checks_;
