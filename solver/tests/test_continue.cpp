@@ -9,6 +9,7 @@
 
 #include "cli_helpers.hpp"
 #include "io/h5.hpp"
+#include "parallel/threads.hpp"
 
 using cellsim::testing::run_cli;
 using cellsim::testing::ScratchDir;
@@ -113,6 +114,26 @@ TEST(Continue, RefusesAStateAtRestSettledWithOtherParameters) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("settled with cell.turgor_kPa"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
+}
+
+// A state continued on another thread count gives round-off, not the same bits: the run says so.
+TEST(Continue, SaysWhenTheSavedRunRanOnAnotherThreadCount) {
+  if (!cellsim::built_with_openmp()) GTEST_SKIP() << "built without OpenMP: one thread only";
+  ScratchDir dir("continue-threads");
+  const auto c = dir.write("case.json", kSmallCase);
+  const auto settled = run_cli(
+      {"run", c, "-o", dir.file("rest.h5"), "--set", "drying.steps=0", "--set", "compression.steps=0", "--quiet"}, dir);
+  ASSERT_EQ(settled.exit_code, 0) << settled.err;
+  const std::vector<std::string> dry{"run", c, "--from", dir.file("rest.h5"), "--set", "drying.steps=20",
+                                     "--set", "compression.steps=0", "--quiet", "-o"};
+  auto same = dry, other = dry;
+  same.insert(same.end(), {dir.file("same.h5"), "--threads", "1"});
+  other.insert(other.end(), {dir.file("other.h5"), "--threads", "2"});
+  const auto r_same = run_cli(same, dir), r_other = run_cli(other, dir);
+  ASSERT_EQ(r_same.exit_code, 0) << r_same.err;
+  EXPECT_EQ(r_same.err.find("note:"), std::string::npos) << r_same.err;
+  ASSERT_EQ(r_other.exit_code, 0) << r_other.err;
+  EXPECT_NE(r_other.err.find("ran on 1 thread(s) and this run on 2"), std::string::npos) << r_other.err;
 }
 
 // Two bonded cells (of the reduced tissue's 642 wall particles: 402 are too few to keep a faceted

@@ -80,6 +80,11 @@ void run_case(Params p, const RunOptions& options) {
                        "(run the case with compression.steps = 0)");
     from_rest = saved.state.step == 0;
     check_same_start(nlohmann::json::parse(saved.case_json), resolved, options.from_path, from_rest);
+    if (saved.threads != options.threads)
+      std::fprintf(stderr,
+                   "cellsim: note: --from '%s' ran on %d thread(s) and this run on %d: the result agrees with one "
+                   "run to round-off, not bit for bit (give both the same --threads for that)\n",
+                   options.from_path.c_str(), saved.threads, options.threads);
   }
   Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);

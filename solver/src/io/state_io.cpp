@@ -69,6 +69,7 @@ SavedRun read_saved_run(const std::string& path) {
     if (!h5::has_attr(file.id(), "completed") || h5::get_attr_int(file.id(), "completed") != 1)
       throw InputError("--from '" + path + "' is not a completed cellsim result (completed != 1)");
     run.case_json = h5::get_attr_string(file.id(), "case_json");
+    if (h5::has_attr(file.id(), "threads")) run.threads = static_cast<int>(h5::get_attr_int(file.id(), "threads"));
     DryingSummary& d = run.drying;  // as write_drying_summary wrote it
     d.settle.iterations = h5::get_attr_int(file.id(), "settle_iterations");
     d.settle.residual = h5::get_attr_double(file.id(), "settle_residual");

@@ -21,6 +21,7 @@ struct SavedRun {
   std::vector<Record> records;
   std::string case_json;
   DryingSummary drying;
+  int threads = 1;  // the threads it ran on: a run continued on another count agrees to round-off only
 };
 
 // Reads a complete result file; throws InputError if it is missing, incomplete or malformed.
