@@ -9,32 +9,13 @@
 #include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 #include "physics/fluid_pairs.hpp"
+#include "fluid_box.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;
+using cellsim::testing::fluid_box;
 
 namespace {
-
-// A cube of fluid on a jittered lattice with random velocities.
-FluidParticles fluid_box(int n_side, double dx, unsigned seed) {
-  FluidParticles f;
-  const int n = n_side * n_side * n_side;
-  f.x.resize(3, n);
-  f.v.resize(3, n);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx), speed(-0.5, 0.5);
-  int p = 0;
-  for (int i = 0; i < n_side; ++i)
-    for (int j = 0; j < n_side; ++j)
-      for (int k = 0; k < n_side; ++k, ++p) {
-        f.x.col(p) << i * dx + jitter(rng), j * dx + jitter(rng), k * dx + jitter(rng);
-        f.v.col(p) << speed(rng), speed(rng), speed(rng);
-      }
-  f.m = Eigen::VectorXd::Constant(n, 1000.0 * dx * dx * dx);
-  f.rho = Eigen::VectorXd::Constant(n, 1000.0);
-  for (int q = 0; q < n; ++q) f.rho[q] += 3.0 * std::sin(q);  // unequal pressures
-  return f;
-}
 
 double kinetic_energy(const FluidParticles& f) {
   return 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();

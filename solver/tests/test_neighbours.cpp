@@ -3,33 +3,18 @@
 // measured displacement calls for it, as without the bounds.
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include "engine/simulation.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/tissue.hpp"
+#include "fluid_box.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;
-
-namespace {
-
-Eigen::Matrix3Xd jittered_lattice(int n_side, double dx, unsigned seed) {
-  Eigen::Matrix3Xd x(3, n_side * n_side * n_side);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx);
-  int p = 0;
-  for (int i = 0; i < n_side; ++i)
-    for (int j = 0; j < n_side; ++j)
-      for (int k = 0; k < n_side; ++k, ++p) x.col(p) << i * dx + jitter(rng), j * dx + jitter(rng), k * dx + jitter(rng);
-  return x;
-}
-
-}  // namespace
+using cellsim::testing::fluid_box;
 
 TEST(Neighbours, AReportedDisplacementBoundSkipsTheCheckUntilTheSkinCouldBeUsedUp) {
   const double dx = 7.7e-6, skin = 0.5e-6, rc_ff = 2.1 * dx, rc_fw = 1.3 * dx;
-  Eigen::Matrix3Xd fluid = jittered_lattice(6, dx, 1), wall = jittered_lattice(4, 1.6 * dx, 2);
+  Eigen::Matrix3Xd fluid = fluid_box(6, dx, 1).x, wall = fluid_box(4, 1.6 * dx, 2).x;
   NeighbourLists lists(skin);
   ASSERT_TRUE(lists.update(fluid, wall, rc_ff, rc_fw));
   const auto move = [&](double distance) {
