@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 #include "engine/simulation.hpp"
 #include "geometry/neighbours.hpp"
