@@ -110,7 +110,11 @@ TEST(CliErrors, UsageErrors) {
 
 TEST(Cli, HelpAndVersionSucceed) {
   ScratchDir dir("help");
-  EXPECT_EQ(run_cli({"--help"}, dir).exit_code, 0);
+  const auto help = run_cli({"--help"}, dir);
+  EXPECT_EQ(help.exit_code, 0);
+  // Every exit code errors.hpp defines is named in the help, with its meaning.
+  for (const char* code : {"0 success", "2 bad input", "3 numerical failure", "4 file error"})
+    EXPECT_NE(help.out.find(code), std::string::npos) << code << " missing from:\n" << help.out;
   EXPECT_EQ(run_cli({"--version"}, dir).exit_code, 0);
   for (const char* command : {"run", "bench", "validate"}) {  // help after a command: usage, no run
     const auto r = run_cli({command, "--help"}, dir);

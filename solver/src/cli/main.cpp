@@ -37,7 +37,8 @@ const char* kUsage =
     "--threads N shares every phase of the step among N threads (default 1: a workflow runs one job\n"
     "per core); results are bit-identical for the same N and agree to round-off between counts.\n"
     "Keys use units in their names, e.g. --set drying.dryness=0.5 --set wall.G_MPa=0.18.\n"
-    "Exit codes: 0 success, 2 bad input (nothing written), 3 numerical failure (OUT.partial kept).\n";
+    "Exit codes: 0 success, 2 bad input (nothing written), 3 numerical failure (OUT.partial kept),\n"
+    "4 file error (the file system refused: the message says what HDF5 and the system said).\n";
 
 struct Args {
   std::string command, case_path, output_path, from_path;
