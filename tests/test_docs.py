@@ -1,5 +1,6 @@
 """docs/case-reference.md and docs/output-reference.md list exactly what the solver accepts and writes,
 and every citation in the tree (model.md sections, the paper's equations, docs/ files) resolves."""
+import re
 import subprocess
 
 
@@ -18,6 +19,38 @@ def test_output_table_matches_solver(cellsim, root):
     doc = (root / "docs" / "output-reference.md").read_text()
     solver = subprocess.run([cellsim, "outputs"], check=True, capture_output=True, text=True).stdout
     assert table_between(doc, "output-timeseries") == solver, "run scripts/update-docs"
+
+
+def test_case_schema_file_matches_solver(cellsim, root):
+    """The workflow validates cases against config/schema/case.schema.json: it is the solver's own."""
+    solver = subprocess.run([cellsim, "schema"], check=True, capture_output=True, text=True).stdout
+    assert (root / "config" / "schema" / "case.schema.json").read_text() == solver, "run scripts/update-docs"
+
+
+def test_case_reference_names_every_section_of_the_schema(cellsim, root):
+    import json
+    schema = json.loads(subprocess.run([cellsim, "schema"], check=True, capture_output=True, text=True).stdout)
+    sections = {name for name, spec in schema["properties"].items() if spec.get("type") == "object"}
+    assert {"cell", "wall", "settle", "tissue"} <= sections, sections  # the test reads what it should
+    intro = (root / "docs" / "case-reference.md").read_text().split("## ", 1)[0]
+    named = set(re.findall(r"`(\w+)`", intro.split("sections (", 1)[1].split(")", 1)[0]))
+    assert named == sections, f"docs/case-reference.md names {sorted(named)}, the schema has {sorted(sections)}"
+    words = {8: "eight", 9: "nine", 10: "ten", 11: "eleven", 12: "twelve"}
+    assert f"up to {words[len(sections)]} sections" in intro
+
+
+def test_license_and_citation(root):
+    """A lab adopting the repository needs a license and a citation: the paper reproduced and the
+    project, at the version the build reports."""
+    import yaml
+    assert (root / "LICENSE").read_text().startswith("MIT License")
+    cff = yaml.safe_load((root / "CITATION.cff").read_text())
+    assert cff["cff-version"] == "1.2.0" and cff["license"] == "MIT"
+    version = re.search(r"project\(cellsim VERSION ([\d.]+)", (root / "CMakeLists.txt").read_text()).group(1)
+    assert cff["version"] == version
+    paper = cff["preferred-citation"]
+    assert paper["doi"] == "10.1371/journal.pone.0235712" and paper["year"] == 2020
+    assert [a["family-names"] for a in paper["authors"]][0] == "Rathnayaka"
 
 
 def test_required_key_paths_exist(cellsim):
@@ -43,7 +76,6 @@ def test_example_case_is_valid_and_at_paper_baseline(cellsim, root):
 
 # --- citations: every "model.md §N", "Eq N" and docs/ link in the tree points at something that exists
 
-import re
 
 SOURCES = ["README.md", "Snakefile", "docs", "solver/src", "solver/tests", "solver/examples", "analysis",
            "workflow", "scripts", "config", "tests", "paper", "data/references"]
@@ -102,6 +134,30 @@ def test_docs_the_tree_names_exist(root):
         if path.suffix == ".md":
             for target in re.findall(r"\]\(([\w./-]+\.md)(?:#[\w-]*)?\)", text):
                 assert (path.parent / target).exists(), f"{path.relative_to(root)} links {target}"
+
+
+# A path into the repository as the tree writes it (`docs/model.md`, data/references/<name>.csv), up to
+# its file's extension; a path with a wildcard or a placeholder (<case>, {fig}) is a pattern, not a file.
+REPO_PATH = re.compile(r"(?<![\w./-])((?:docs|data|config|scripts|tests|solver|workflow|analysis|paper)/[\w./+-]*\w)")
+EXTENSION = re.compile(r"^.*?\.(?:md|py|yaml|json|csv|cpp|hpp|smk|html|txt|cff|sh|in)(?![\w])")
+MISSING_ON_PURPOSE = {"data/references/none.csv"}  # the bad-input tests' reference file that does not exist
+
+
+def test_every_file_the_tree_cites_is_in_the_repository(root):
+    """No file cites a document the repository does not contain: every path into the tree resolves,
+    and nothing points outside it (the project stands alone)."""
+    checked = 0
+    for path, text in tree_texts(root):
+        for cited in REPO_PATH.findall(text):
+            if any(c in cited for c in "*<{") or cited in MISSING_ON_PURPOSE:
+                continue
+            as_file = EXTENSION.match(cited)
+            target = as_file.group(0) if as_file else cited
+            checked += 1
+            assert (root / target).exists(), f"{path.relative_to(root)} cites {target}, which is not in the repository"
+        outside = "../" + "shared"  # written in two parts so that this line does not match itself
+        assert outside not in text, f"{path.relative_to(root)} points outside the repository"
+    assert checked > 100, checked  # the tree does cite its files: the test is not vacuous
 
 
 def test_output_reference_lists_everything_a_run_writes(cellsim, root, tmp_path):
