@@ -44,27 +44,49 @@ def small_runs(cellsim, tmp_path_factory):
     return runs
 
 
-def run_ci_workflow(root, out, *extra, timeout=1800):
-    """snakemake on config/ci.yaml into `out` (its own output folder, so runs do not collide)."""
-    return subprocess.run(["snakemake", "--nolock", "--cores", "2", "--configfile", "config/ci.yaml",
-                           "--config", f"output_dir={out}", "-q", *extra], cwd=root, capture_output=True,
+CI = ["config/ci.yaml"]                                 # the paper's 48 cases on reduced cells
+TINY = ["config/ci.yaml", "tests/tiny_matrix.yaml"]    # a case or two of each study: every rule, 5 cases
+
+
+def workflow_command(out, configs, *extra):
+    """snakemake on config/config.yaml and `configs` merged over it, into `out` (its own folder)."""
+    return ["snakemake", "--cores", "2", "--configfile", *configs, "--config", f"output_dir={out}", *extra]
+
+
+def run_workflow(root, out, configs, *extra, timeout=1800):
+    """Runs the workflow (without its lock: tests run several at once) and asserts that it succeeds."""
+    done = subprocess.run(workflow_command(out, configs, "--nolock", "-q", *extra), cwd=root, capture_output=True,
                           text=True, timeout=timeout)
+    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
+    return out
 
 
 def run_reduced_target(root, out, target, reduced_config, timeout=1800):
-    """snakemake `target` on config/ci.yaml and a reduced config (tests/*_reduced.yaml) into `out`;
-    asserts that it succeeds and returns `out`."""
-    done = subprocess.run(["snakemake", "--nolock", "--cores", "2", target, "--configfile", "config/ci.yaml",
-                           reduced_config, "--config", f"output_dir={out}", "-q"], cwd=root,
-                          capture_output=True, text=True, timeout=timeout)
-    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
-    return out
+    """snakemake `target` on config/ci.yaml and a reduced config (tests/*_reduced.yaml) into `out`."""
+    return run_workflow(root, out, CI + [reduced_config], target, timeout=timeout)
+
+
+def assert_same_results(out, reference):
+    """Every result, table, figure and page of `out` is byte for byte the one of the reference run (the
+    report names its own output folder: that name aside)."""
+    written = sorted(p.relative_to(reference) for p in reference.rglob("*")
+                     if p.is_file() and p.parts[len(reference.parts)] in ("runs", "tables", "figures", "report", "cases"))
+    assert len(written) > 50, written
+    for path in written:
+        ours, theirs = (out / path).read_bytes(), (reference / path).read_bytes()
+        if path.suffix == ".html":
+            ours, theirs = ours.replace(bytes(out), b"OUT"), theirs.replace(bytes(reference), b"OUT")
+        assert ours == theirs, f"{path} differs from the uninterrupted run"
 
 
 @pytest.fixture(scope="session")
 def ci_run(root, tmp_path_factory):
     """The whole workflow on config/ci.yaml, uninterrupted; shared by the tests that need it."""
-    out = tmp_path_factory.mktemp("ci-results")
-    done = run_ci_workflow(root, out)
-    assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
-    return out
+    return run_workflow(root, tmp_path_factory.mktemp("ci-results"), CI)
+
+
+@pytest.fixture(scope="session")
+def tiny_run(root, tmp_path_factory):
+    """The workflow on the tiny matrix, uninterrupted, on the local machine: the reference that a resumed
+    run and a run through SLURM must equal byte for byte."""
+    return run_workflow(root, tmp_path_factory.mktemp("tiny-results"), TINY)
