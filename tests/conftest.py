@@ -48,14 +48,39 @@ CI = ["config/ci.yaml"]                                 # the paper's 48 cases o
 TINY = ["config/ci.yaml", "tests/tiny_matrix.yaml"]    # a case or two of each study: every rule, 5 cases
 
 
+def merged(base, update):
+    """update merged into base as Snakemake merges --configfile files: dicts key by key, anything else replaced."""
+    out = dict(base)
+    for key, value in update.items():
+        out[key] = merged(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
+    return out
+
+
+def workflow_config(root, configs, out=None):
+    """The config a workflow run on `configs` (merged over config/config.yaml) sees, writing to `out`."""
+    import yaml
+    config = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    for path in configs:
+        config = merged(config, yaml.safe_load((root / path).read_text()))
+    if out is not None:
+        config["output_dir"] = str(out)
+    return config
+
+
+def workflow_options(out, configs):
+    """config/config.yaml with `configs` merged over it, writing into `out` (each run its own folder)."""
+    return ["--configfile", *configs, "--config", f"output_dir={out}"]
+
+
 def workflow_command(out, configs, *extra):
-    """snakemake on config/config.yaml and `configs` merged over it, into `out` (its own folder)."""
-    return ["snakemake", "--cores", "2", "--configfile", *configs, "--config", f"output_dir={out}", *extra]
+    """snakemake [targets and options in extra] on `configs` into `out` (the config options go last:
+    they take lists, which would swallow a target after them)."""
+    return ["snakemake", "--cores", "2", *extra, *workflow_options(out, configs)]
 
 
 def run_workflow(root, out, configs, *extra, timeout=1800):
     """Runs the workflow (without its lock: tests run several at once) and asserts that it succeeds."""
-    done = subprocess.run(workflow_command(out, configs, "--nolock", "-q", *extra), cwd=root, capture_output=True,
+    done = subprocess.run(workflow_command(out, configs, *extra, "--nolock", "-q"), cwd=root, capture_output=True,
                           text=True, timeout=timeout)
     assert done.returncode == 0, (done.stdout + done.stderr)[-4000:]
     return out

@@ -5,25 +5,17 @@ from one small real run, shared by every case."""
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
 from analysis import matrix, quantities
 from analysis.figures import curves, model, shapes
+from conftest import CI, workflow_config
 
 MIN_PANEL_IN = (2.2, 2.0)  # width, height
 MAX_LEGEND_SHARE = 0.05
 
 
-def merged(base, update):
-    out = dict(base)
-    for key, value in update.items():
-        out[key] = merged(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
-    return out
-
-
 def configs(root):
-    default = yaml.safe_load((root / "config" / "config.yaml").read_text())
-    return {"default": default, "ci": merged(default, yaml.safe_load((root / "config" / "ci.yaml").read_text()))}
+    return {"default": workflow_config(root, []), "ci": workflow_config(root, CI)}
 
 
 def synthetic_series(case, k):

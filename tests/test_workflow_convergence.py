@@ -3,15 +3,17 @@ table and page, its figures, and none of the default target's. Slow: about two m
 import pandas as pd
 import pytest
 
-from conftest import run_reduced_target
+from analysis import matrix
+from conftest import CI, run_reduced_target, workflow_config
+from figure_checks import check_figures
 
 pytestmark = pytest.mark.slow
+REDUCED = "tests/convergence_reduced.yaml"
 
 
 @pytest.fixture(scope="module")
 def convergence_run(root, tmp_path_factory):
-    return run_reduced_target(root, tmp_path_factory.mktemp("convergence results"), "convergence",
-                              "tests/convergence_reduced.yaml")
+    return run_reduced_target(root, tmp_path_factory.mktemp("convergence results"), "convergence", REDUCED)
 
 
 def test_table_has_every_refinement_with_its_changes(convergence_run):
@@ -27,12 +29,15 @@ def test_table_has_every_refinement_with_its_changes(convergence_run):
     assert table["load_fluid_share"].between(0, 1.5).all()
 
 
-def test_page_and_figures_are_written_and_the_default_target_is_not(convergence_run):
+def test_page_and_figures_are_written_and_the_default_target_is_not(root, convergence_run, tmp_path):
     page = (convergence_run / "report" / "convergence.html").read_text()
     for section in ("Verdicts", "Resolution convergence", "Time-step convergence", "The two wall-fluid couplings"):
         assert section in page, section
-    for fig in ("conv01", "conv02", "conv03", "conv04"):
-        assert (convergence_run / "figures" / f"{fig}.png").stat().st_size > 10_000, fig
+    config = workflow_config(root, CI + [REDUCED], convergence_run)
+    figures = matrix.target_figures(config, "convergence")
+    assert figures == ["conv01", "conv02", "conv03", "conv04"]
+    check_figures(config, convergence_run, root, tmp_path, figures)
+    for fig in figures:
         assert f"figures/{fig}.png" in page
     assert not (convergence_run / "figures" / "fig01.png").exists()
     assert not (convergence_run / "report" / "index.html").exists()

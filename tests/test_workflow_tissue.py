@@ -4,14 +4,17 @@ target's. Slow: a few minutes on 2 cores."""
 import pandas as pd
 import pytest
 
-from conftest import run_reduced_target
+from analysis import matrix
+from conftest import CI, run_reduced_target, workflow_config
+from figure_checks import check_figures
 
 pytestmark = pytest.mark.slow
+REDUCED = "tests/tissue_reduced.yaml"
 
 
 @pytest.fixture(scope="module")
 def tissue_run(root, tmp_path_factory):
-    return run_reduced_target(root, tmp_path_factory.mktemp("tissue results"), "tissue", "tests/tissue_reduced.yaml",
+    return run_reduced_target(root, tmp_path_factory.mktemp("tissue results"), "tissue", REDUCED,
                               timeout=2400)
 
 
@@ -27,11 +30,14 @@ def test_tissue_table_compares_each_tissue_with_the_single_cell(tissue_run):
     assert (tissues["stress at 0.05 [kPa]"] > 0).all() and tissues["x single cell at 0.05"].notna().all()
 
 
-def test_page_figures_and_3d_views_are_written_and_the_default_target_is_not(tissue_run):
+def test_page_figures_and_3d_views_are_written_and_the_default_target_is_not(root, tissue_run, tmp_path):
     page = (tissue_run / "report" / "tissue.html").read_text()
     assert "Tissues against the single cell" in page
-    for fig in ("tis01", "tis02", "tis03", "tis04"):
-        assert (tissue_run / "figures" / f"{fig}.png").stat().st_size > 10_000, fig
+    config = workflow_config(root, CI + [REDUCED], tissue_run)
+    figures = matrix.target_figures(config, "tissue")
+    assert figures == ["tis01", "tis02", "tis03", "tis04"]
+    check_figures(config, tissue_run, root, tmp_path, figures)
+    for fig in figures:
         assert f"figures/{fig}.png" in page
     views = sorted((tissue_run / "report" / "cells").glob("*N8*.data.js"))
     assert len(views) == 2 and '"n_cells": 8' in views[0].read_text()
