@@ -72,24 +72,32 @@ def write_config(tmp_path, change):
 
 
 @pytest.mark.parametrize("change, named", [
-    ({"base": {"wall": {"G_Mpa": 18}}}, "G_Mpa"),                                   # misspelt key
-    ({"base": {"drying": {"dryness": 1.5}}}, "1.5"),                                # out of range
-    ({"base": {"cell": {"n_wall": "many"}}}, "many"),                               # wrong type
-    ({"studies": {"extra": {"vary": {"dryness": [0.5]}, "colour": "red"}}}, "colour"),  # unknown key
-    ({"studies": {"extra": {"vary": {"dryness": [1.5]}}}}, "drying.dryness = 1.5"),  # bad study value
-    ({"studies": {"extra": {"vary": {"humidity": [0.5]}}}}, "humidity"),             # unknown axis
+    ({"base": {"wall": {"G_Mpa": 18}}},                                              # misspelt key
+     ["Additional properties are not allowed ('G_Mpa' was unexpected)", "instance['base']['wall']"]),
+    ({"base": {"drying": {"dryness": 1.5}}},                                         # out of range
+     ["1.5 is greater than the maximum of 1.0", "instance['base']['drying']['dryness']"]),
+    ({"base": {"cell": {"n_wall": "many"}}},                                         # wrong type
+     ["'many' is not of type 'integer'", "instance['base']['cell']['n_wall']"]),
+    ({"studies": {"extra": {"vary": {"dryness": [0.5]}, "colour": "red"}}},          # unknown key
+     ["('colour' was unexpected)", "instance['studies']['extra']"]),
+    ({"studies": {"extra": {"vary": {"dryness": [1.5]}}}},                           # bad study value
+     ["studies extra: axis dryness", "drying.dryness = 1.5"]),
+    ({"studies": {"extra": {"vary": {"humidity": [0.5]}}}},                          # unknown axis
+     ["studies.extra.vary.humidity: unknown axis"]),
     ({"figures": {"fig99": {"family": "curves", "study": "nope", "title": "t", "x": "time_s", "y": ["area_m2"]}}},
-     "nope"),                                                                        # unknown study
+     ["figures.fig99.study: unknown study 'nope'"]),                                # unknown study
     ({"figures": {"fig99": {"family": "curves", "study": "plate_speed", "title": "t", "x": "time_s",
-                            "y": ["stres"]}}}, "stres"),                             # unknown quantity
+                            "y": ["stres"]}}}, ["figures.fig99: unknown quantity 'stres'"]),  # unknown quantity
     ({"references": {"r": {"file": "data/references/none.csv", "strain_unit": "1", "stress_unit": "kPa",
-                           "label": "l", "provenance": "p"}}}, "none.csv"),          # missing file
+                           "label": "l", "provenance": "p"}}},
+     ["references.r.file: no such file 'data/references/none.csv'"]),               # missing file
 ])
 def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, change, named):
     done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")
     assert done.returncode != 0
     message = done.stdout + done.stderr
-    assert named in message, message[-2000:]
+    for words in named:
+        assert words in message, message[-2000:]
     assert "Job stats" not in done.stdout  # nothing was planned
 
 
