@@ -8,7 +8,8 @@ for "stiffer", by the ratio of their mean stresses (the ratio of the areas under
 strain 0.05, which the verdicts used before, stays beside each verdict as `point_value`.
 
 Every claim names the figure it comes from, what is measured, the threshold for "agree" and why; a
-claim whose cases are not in the run (a reduced config) is "not run"."""
+claim whose cases are not in the run (a reduced config) is "not run", and one whose curves are all there
+but stop before the strains it compares (a reduced config's end strain) is "not reached"."""
 import numpy as np
 
 from analysis.aggregate import SMOOTH_STRAIN, window_mean
@@ -88,8 +89,12 @@ def _nanmax(values):
     return max(v) if v else np.nan
 
 
-def _row(claim, figure, measured, value, agree, threshold, point_value=np.nan, note=""):
-    verdict = "not run" if not np.isfinite(value) else ("agree" if agree(value) else "disagree")
+def _row(claim, figure, measured, value, agree, threshold, point_value=np.nan, note="", curves=()):
+    """curves: the compression curves the claim compares, to tell a case missing from curves too short."""
+    if np.isfinite(value):
+        verdict = "agree" if agree(value) else "disagree"
+    else:
+        verdict = "not reached" if curves and all(len(grid) for grid, _ in curves) else "not run"
     return {"claim": claim, "figure": figure, "measured": measured, "value": value, "threshold": threshold,
             "verdict": verdict, "point_value": point_value, "note": note}
 
@@ -114,26 +119,29 @@ def evaluate(summary, base, series):
 
     rows.append(_row("Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1, 200 kPa)", "7",
                      "ratio of mean stresses, fresh / X/X0 = 0.1", mean_ratio(curve(dryness=1.0), curve(dryness=0.1)),
-                     lambda r: r > 1.0, "> 1", point(dryness=1.0) / point(dryness=0.1)))
+                     lambda r: r > 1.0, "> 1", point(dryness=1.0) / point(dryness=0.1),
+                     curves=[curve(dryness=1.0), curve(dryness=0.1)]))
 
     rows.append(_row("X/X0 = 0.1 stays above X/X0 = 0.3 at strains above 0.1", "7",
                      "ratio of mean stresses from strain 0.1 on, X/X0 = 0.1 / 0.3",
                      mean_ratio(curve(dryness=0.1), curve(dryness=0.3), from_strain=0.1),
                      lambda r: r > 1.0, "> 1", _one(summary, "stress_kPa_at_0.15", **at(dryness=0.1))
                      / _one(summary, "stress_kPa_at_0.15", **at(dryness=0.3)),
-                     note="point_value here: at strain 0.15"))
+                     note="point_value here: at strain 0.15", curves=[curve(dryness=0.1), curve(dryness=0.3)]))
 
     by_turgor = [mean_ratio(curve(dryness=1.0, turgor_kPa=p), curve(dryness=1.0, turgor_kPa=100)) for p in (100, 200, 300)]
     rows.append(_row("Fresh cells stiffen with turgor (100 < 200 < 300 kPa)", "10",
                      "ratio of mean stresses, 300 / 100 kPa (and 200 / 100 kPa between 1 and it)", by_turgor[2],
                      lambda r: 1.0 < by_turgor[1] < r, "> 1 and increasing",
-                     point(dryness=1.0, turgor_kPa=300) / point(dryness=1.0, turgor_kPa=100)))
+                     point(dryness=1.0, turgor_kPa=300) / point(dryness=1.0, turgor_kPa=100),
+                     curves=[curve(dryness=1.0, turgor_kPa=p) for p in (100, 200, 300)]))
 
     dry = [curve(dryness=0.1, turgor_kPa=p) for p in (100, 200, 300)]
     rows.append(_row("Extremely dried cells barely depend on turgor (curves overlap)", "10",
                      "largest relative RMS difference of two turgor levels, X/X0 = 0.1",
                      _nanmax([relative_rms(dry[i], dry[j]) for i, j in ((0, 1), (0, 2), (1, 2))]),
-                     lambda s: s < 0.15, "< 0.15", _spread([point(dryness=0.1, turgor_kPa=p) for p in (100, 200, 300)])))
+                     lambda s: s < 0.15, "< 0.15", _spread([point(dryness=0.1, turgor_kPa=p) for p in (100, 200, 300)]),
+                     curves=dry))
 
     peak = {x: _one(summary, "peak_force_top_uN", **at(dryness=x)) for x in (1.0, 0.1)}
     rows.append(_row("The plate force is largest for fresh cells", "14", "peak top-plate force, fresh / X/X0 = 0.1",
@@ -144,19 +152,22 @@ def evaluate(summary, base, series):
     g_point = [abs(point(dryness=x, G_MPa=0.18) / point(dryness=x, G_MPa=18) - 1) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("G = 18 and 0.18 MPa give virtually overlapping curves", "15",
                      "largest relative RMS difference, G 0.18 vs 18 MPa (3 dryness levels)", _nanmax(g),
-                     lambda d: d < 0.10, "< 0.10", _nanmax(g_point)))
+                     lambda d: d < 0.10, "< 0.10", _nanmax(g_point),
+                     curves=[curve(dryness=x, G_MPa=G) for x in (1.0, 0.5, 0.1) for G in (0.18, 18)]))
 
     thin = [relative_rms(curve(dryness=x, t0_um=t), curve(dryness=x, t0_um=6)) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 12)]
     thin_point = [_spread([point(dryness=x, t0_um=t) for t in (0.1, 1, 6, 12)]) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("Wall thickness 0.1 to 12 um makes no significant difference", "16",
                      "largest relative RMS difference to the 6 um wall (3 dryness levels)", _nanmax(thin),
-                     lambda d: d < 0.10, "< 0.10", _nanmax(thin_point)))
+                     lambda d: d < 0.10, "< 0.10", _nanmax(thin_point),
+                     curves=[curve(dryness=x, t0_um=t) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 6, 12)]))
 
     thick = [relative_rms(curve(dryness=x, t0_um=100), curve(dryness=x, t0_um=6)) for x in (1.0, 0.5, 0.1)]
     thick_point = [abs(point(dryness=x, t0_um=100) / point(dryness=x, t0_um=6) - 1) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("A 100 um wall does change the response", "16",
                      "largest relative RMS difference, 100 vs 6 um (3 dryness levels)", _nanmax(thick),
-                     lambda d: d > 0.10, "> 0.10", _nanmax(thick_point)))
+                     lambda d: d > 0.10, "> 0.10", _nanmax(thick_point),
+                     curves=[curve(dryness=x, t0_um=t) for x in (1.0, 0.5, 0.1) for t in (6, 100)]))
 
     size_point = [abs(point(dryness=x, D_um=200) / point(dryness=x, D_um=150) - 1) for x in (1.0, 0.5, 0.1)]
     size = {column: _nanmax([relative_rms(curve(column, dryness=x, D_um=200), curve(column, dryness=x, D_um=150))
@@ -170,7 +181,8 @@ def evaluate(summary, base, series):
         rows.append(_row("D = 150 and 200 um cells respond closely alike", "18",
                          f"largest relative RMS difference of the {name}, 200 vs 150 um", size[column],
                          lambda d: d < 0.25, "< 0.25", _nanmax(size_point) if column == "plate_stress_Pa" else np.nan,
-                         note=f"judged with both stress definitions: {supports}"))
+                         note=f"judged with both stress definitions: {supports}",
+                         curves=[curve(column, dryness=x, D_um=d) for x in (1.0, 0.5, 0.1) for d in (150, 200)]))
 
     peak_10 = {x: early_peak_kPa(series, case_of(dryness=x, plate_speed_m_s=10)) if case_of(dryness=x, plate_speed_m_s=10)
                else np.nan for x in (1.0, 0.1)}

@@ -13,7 +13,7 @@ from analysis.matrix import figure_cases
 STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
          "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
          "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
-         ".disagree td.verdict{color:#b00}.not-run td.verdict{color:grey}"
+         ".disagree td.verdict{color:#b00}.not-run td.verdict,.not-reached td.verdict{color:grey}"
          ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
 
 

@@ -126,6 +126,27 @@ def test_claims_compare_fresh_and_dried(config):
     assert verdicts["G = 18 and 0.18 MPa give virtually overlapping curves"]["verdict"] == "not run"
 
 
+def test_a_claim_on_curves_that_stop_short_is_not_reached_and_one_without_its_cases_not_run(config):
+    """X/X0 = 0.1 against 0.3 from strain 0.1 on: compressions that end at strain 0.08 (a reduced config's
+    end strain) are 'not reached'; without the X/X0 = 0.3 case the claim is 'not run'."""
+    base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
+    claim = "X/X0 = 0.1 stays above X/X0 = 0.3 at strains above 0.1"
+
+    def verdict(cases, end_strain):
+        rows, series = [], []
+        for dryness, stiffness in cases:
+            ts = synthetic_series(stiffness, f"X{dryness}").assign(section_stress_Pa=np.nan)
+            ts = ts[~(ts["nominal_strain"] > end_strain)]
+            series.append(ts)
+            rows.append({**base, "dryness": dryness, "case": f"X{dryness}", **aggregate.summarise(ts)})
+        verdicts = {r["claim"]: r for r in claims.evaluate(pd.DataFrame(rows), base, pd.concat(series))}
+        return verdicts[claim]["verdict"]
+
+    assert verdict([(0.1, 500.0), (0.3, 400.0)], 0.2) == "agree"
+    assert verdict([(0.1, 500.0), (0.3, 400.0)], 0.08) == "not reached"
+    assert verdict([(0.1, 500.0)], 0.2) == "not run"
+
+
 def test_curve_verdicts_ignore_one_wiggle_that_decides_a_point_value():
     """Two compressions alike but for one spike at strain 0.05 (a wall particle entering the plate's
     range): the point value sees 27 %, the smoothed curves a few %."""
