@@ -3,13 +3,18 @@
 A case is `base` with the values of every axis set; its name lists every axis as label+value,
 in the order of the labels (e.g. D150_G18_P200_t6_v1_X0.5), so names are stable when studies are
 added or removed, whatever order config files list the axes in, and identical cases of different
-studies coincide. An axis with `hide_base_value` appears in a name only where its value differs
-from base (so adding such an axis renames no existing case). An axis without a key (a resolution
+studies coincide. An axis appears in a name only where its value differs from base (so adding an axis
+renames no existing case and reruns nothing), unless it sets `hide_base_value: false`, as the paper's
+axes do (their names say every value: D150_G18_P200_t6_v1_X0.5). An axis without a key (a resolution
 level, say) sets only its `coupled` keys, and its value at base is `base_value`. Coupled keys are
 set after every axis's own key, and a hidden axis's value is read back from the finished case, so
 a name always says what the case runs. The dried state of a case is the same name
 without the axes that only touch the compression stage; its state at rest (the settled cell it dries
 from) is the dried name without the dryness as well, so that one settle serves every dryness.
+
+Every case is complete: a key that neither base nor an axis sets takes the solver's default (from
+config/schema/case.schema.json), so the case file of a case does not change when base comes to name
+a key at its default value (as adding an axis asks), and nothing reruns for it.
 
 A study with a `target` (convergence, tissue) is not part of the default target (`snakemake --cores 2`);
 it runs with `snakemake --cores 2 <target>`.
@@ -166,6 +171,24 @@ def check(config, root="."):
     check_cases(config, root)
 
 
+CASE_SCHEMA = pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" / "case.schema.json"
+
+
+def case_schema():
+    """The solver's case schema (`cellsim schema`, kept in config/schema by scripts/update-docs)."""
+    return json.loads(CASE_SCHEMA.read_text())
+
+
+def with_defaults(case, schema):
+    """The case with every key it leaves out that has a default set to that default (derived keys,
+    which have none, stay out: the solver derives them)."""
+    for section, spec in schema["properties"].items():
+        for key, rule in spec.get("properties", {}).items():
+            if "default" in rule and key not in case.get(section, {}):
+                case.setdefault(section, {})[key] = rule["default"]
+    return case
+
+
 def check_cases(config, root="."):
     """Every case the studies make must be a valid cellsim case (ranges of the solver's schema),
     so a bad study value stops the workflow before any job runs, naming study, axis and value."""
@@ -185,8 +208,13 @@ def _by_label(config):
     return sorted(config["axes"].items(), key=lambda item: item[1]["label"].lower())
 
 
+def hides_base_value(spec):
+    """An axis shows its value in case names only where it differs from base, unless it says otherwise."""
+    return spec.get("hide_base_value", True)
+
+
 def _named(config, values, axis, spec):
-    return not (spec.get("hide_base_value") and _same(values[axis], base_value(config, axis)))
+    return not (hides_base_value(spec) and _same(values[axis], base_value(config, axis)))
 
 
 def _same(a, b):
@@ -215,6 +243,7 @@ def expand(config):
     """All cases of all studies, deduplicated: {name: Case}, in a stable order."""
     axes, base = config["axes"], config["base"]
     base_values = {axis: base_value(config, axis) for axis in axes}
+    schema = case_schema()
     cases = {}
     for study, spec in config["studies"].items():
         varied = list(spec["vary"])
@@ -228,8 +257,9 @@ def expand(config):
             for axis, value in values.items():
                 for key, coupled in axes[axis].get("coupled", {}).get(fmt(value), {}).items():
                     set_key(case, key, coupled)
+            with_defaults(case, schema)
             for axis, axis_spec in axes.items():
-                if "key" in axis_spec and axis_spec.get("hide_base_value"):
+                if "key" in axis_spec and hides_base_value(axis_spec):
                     values[axis] = get_key(case, axis_spec["key"])
             name = case_name(config, values)
             if name not in cases:

@@ -1,6 +1,7 @@
 """Shared fixtures: where the built solver is, and the repository root."""
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -65,6 +66,16 @@ def workflow_config(root, configs, out=None):
     if out is not None:
         config["output_dir"] = str(out)
     return config
+
+
+def job_counts(output):
+    """{rule: count} from snakemake's 'Job stats' table."""
+    counts = {}
+    for line in output.splitlines():
+        m = re.match(r"^(\w+)\s+(\d+)(\s+\d+\s+\d+)?\s*$", line.strip())
+        if m and m.group(1) != "total":
+            counts[m.group(1)] = int(m.group(2))
+    return counts
 
 
 def workflow_options(out, configs):

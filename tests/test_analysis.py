@@ -52,9 +52,29 @@ def test_keyless_axis_value_must_be_one_it_defines(config):
 
 def test_coupled_values_follow_their_axis(config):
     big = matrix.expand(config)["D200_G18_P200_t6_v1_X0.1"]
-    assert big.case["cell"] == {**config["base"]["cell"], "diameter_um": 200, "n_wall": 2516, "n_fluid": 3708}
+    set_by_config = {key: big.case["cell"][key] for key in config["base"]["cell"]}
+    assert set_by_config == {**config["base"]["cell"], "diameter_um": 200, "n_wall": 2516, "n_fluid": 3708}
     small = matrix.expand(config)["D150_G18_P200_t6_v1_X0.1"]
     assert small.case["cell"]["n_wall"] == 2067
+
+
+def test_cases_are_complete_so_naming_a_default_in_base_changes_no_case_file(config):
+    """Keys the config leaves out take the solver's defaults (derived keys stay out, for the solver to
+    derive); base naming a key at its default value (as adding an axis asks) leaves every case file as
+    it was."""
+    schema = matrix.case_schema()
+    case = matrix.expand(config)["D150_G18_P200_t6_v1_X0.1"].case
+    for section, spec in schema["properties"].items():
+        for key, rule in spec.get("properties", {}).items():
+            if "default" in rule:
+                assert key in case[section], f"{section}.{key}"
+            elif key not in config["base"].get(section, {}):
+                assert key not in case.get(section, {}), f"{section}.{key} is derived: the solver fills it"
+    assert case["wall"]["bending_stiffness_J"] == 1e-10 and case["coupling"]["model"] == "lennard_jones"
+    named = dict(config, base=dict(config["base"], wall={**config["base"]["wall"], "bending_stiffness_J": 1e-10}))
+    before, after = matrix.expand(config), matrix.expand(named)
+    assert list(before) == list(after)
+    assert all(matrix.case_json(before[n].case) == matrix.case_json(after[n].case) for n in before)
 
 
 def test_names_do_not_depend_on_axis_order(config):
@@ -266,7 +286,7 @@ def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
     assert {n for n in tissue if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
                                                    "D150_G18_P200_t6_v1_X0.1"}  # one cell: the paper's case
     big = cases["D150_G18_N27_P200_t6_v1_X0.1"]
-    assert big.case["tissue"] == {"cells_x": 3, "cells_y": 3, "cells_z": 3}
+    assert {k: big.case["tissue"][k] for k in ("cells_x", "cells_y", "cells_z")} == {"cells_x": 3, "cells_y": 3, "cells_z": 3}
     assert big.case["compression"]["plate_length_um"] == 600 and big.dried == "D150_G18_N27_P200_t6_X0.1"
     assert matrix.target_figures(config, "tissue") == ["tis01", "tis02", "tis03", "tis04"]
     assert not set(matrix.target_figures(config, "tissue")) & set(matrix.target_figures(config))

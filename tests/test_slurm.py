@@ -8,7 +8,7 @@ import subprocess
 
 import pytest
 
-from conftest import TINY, assert_same_results, workflow_command
+from conftest import TINY, assert_same_results, workflow_options
 from slurm_cluster import OneNodeSlurm, available
 
 pytestmark = pytest.mark.slow
@@ -27,7 +27,7 @@ def cluster(tmp_path_factory):
 def test_tiny_study_runs_through_slurm_with_the_local_results(root, tmp_path, cluster, tiny_run):
     out, logs = tmp_path / "results", tmp_path / "slurm-logs"
     env = dict(cluster.env, CELLSIM_SLURM_LOGS=str(logs))
-    command = ["snakemake", "--profile", "workflow/profiles/slurm", *workflow_command(out, TINY)[3:], "--nolock"]
+    command = ["snakemake", "--profile", "workflow/profiles/slurm", *workflow_options(out, TINY), "--nolock"]
     done = subprocess.run(command, cwd=root, env=env, capture_output=True, text=True, timeout=2400)
     assert done.returncode == 0, (done.stdout + done.stderr)[-4000:] + cluster.logs()
     assert_same_results(out, tiny_run)

@@ -1,11 +1,14 @@
 """The whole pipeline end to end on config/ci.yaml (reduced cells): every case runs, every figure shows
 its data (tests/figure_checks.py), the tables and the report are written, every claim is judged.
 Slow: a few minutes on 2 cores."""
+import subprocess
+import textwrap
+
 import pandas as pd
 import pytest
 
 from analysis import matrix
-from conftest import CI, workflow_config
+from conftest import CI, job_counts, workflow_command, workflow_config
 from figure_checks import check_figures
 
 pytestmark = pytest.mark.slow
@@ -48,3 +51,29 @@ def test_report_shows_every_figure_and_the_claims(ci_run):
     assert list(not_judged["verdict"]) == ["not reached"], not_judged
     assert not_judged["claim"].iloc[0] == "X/X0 = 0.1 stays above X/X0 = 0.3 at strains above 0.1"
     assert "Model closures" in html and "wall-pressure closure" in html
+
+
+def readme_new_axis(root):
+    """The README's example of a study on a new axis (between its new-axis markers), as YAML."""
+    block = (root / "README.md").read_text().split("<!-- begin new-axis -->", 1)[1].split("<!-- end new-axis -->", 1)[0]
+    return textwrap.dedent(block.split("```yaml", 1)[1].split("```", 1)[0])
+
+
+def test_adding_the_readmes_new_axis_runs_only_the_new_cases(root, ci_run, tmp_path):
+    """Extending a finished study as the README shows reruns no case that was there: the plan over the
+    CI run holds the new cases' runs (kb1e-09 at X/X0 = 1 and 0.1: two compressions, two dryings, one
+    settle) and the tables and report that gather them, nothing else."""
+    extra = tmp_path / "new-axis.yaml"
+    extra.write_text(readme_new_axis(root))
+    done = subprocess.run(workflow_command(ci_run, CI + [str(extra)], "-n", "--nolock"), cwd=root,
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    counts = job_counts(done.stdout)
+    runs = {rule: counts.pop(rule) for rule in ("compress", "dry", "settle")}
+    assert runs == {"compress": 2, "dry": 2, "settle": 1}, runs
+    planned = [line.split(":", 1)[1] for line in done.stdout.splitlines() if line.strip().startswith("output:")]
+    reruns = [line for line in planned if "/runs/" in line and "kb1e-09" not in line]
+    assert not reruns, f"existing cases rerun: {reruns}"
+    assert set(counts) <= {"case_file", "dried_case_file", "rest_case_file", "cell_view", "aggregate", "manifest",
+                           "report", "figure", "all"}, counts
+    assert counts.get("figure", 0) == 0 and counts.get("cell_view", 0) == 2, counts

@@ -1,28 +1,18 @@
 """The workflow's config: bad configs stop before any job with the key named; the default config
 plans every case and figure; a study and a figure added in config are planned."""
-import re
 import subprocess
 
 import pytest
 import yaml
 
 from analysis import matrix
+from conftest import job_counts
 
 SNAKEMAKE = ["snakemake", "--nolock", "-n", "--cores", "2"]
 
 
 def dry_run(root, *extra):
     return subprocess.run(SNAKEMAKE + list(extra), cwd=root, capture_output=True, text=True, timeout=300)
-
-
-def job_counts(output):
-    """{rule: count} from snakemake's 'Job stats' table."""
-    counts = {}
-    for line in output.splitlines():
-        m = re.match(r"^(\w+)\s+(\d+)(\s+\d+\s+\d+)?\s*$", line.strip())
-        if m and m.group(1) != "total":
-            counts[m.group(1)] = int(m.group(2))
-    return counts
 
 
 def test_default_config_plans_every_case_and_figure(root, tmp_path):

@@ -12,7 +12,7 @@ import time
 import h5py
 import pytest
 
-from conftest import TINY, assert_same_results, workflow_command
+from conftest import TINY, assert_same_results, workflow_command, workflow_options
 
 pytestmark = pytest.mark.slow
 
@@ -37,7 +37,7 @@ def readme_recovery(root):
 def test_killed_workflow_resumes_as_the_readme_says(root, tmp_path, tiny_run):
     out = tmp_path / "results"
     command = workflow_command(out, TINY)  # the interrupted run's command, with its lock, as a user runs it
-    options = command[3:]
+    options = workflow_options(out, TINY)
     job = subprocess.Popen(command + ["-q"], cwd=root, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                            start_new_session=True)
     deadline = time.time() + 900

@@ -255,13 +255,17 @@ std::string json_schema() {
   for (const auto& p : param_specs()) {
     const std::string section = p.key.substr(0, p.key.find('.'));
     json rule = {{"description", p.meaning + " [" + p.unit + "] (" + p.equation + ")"}};
+    // "default" (an annotation, not a rule): the value an absent key takes; derived keys have none.
     if (is_choice(p)) {
       rule["type"] = "string";
       rule["enum"] = p.choices;
+      rule["default"] = p.choices.front();
     } else {
       rule["type"] = is_integer(p) ? json("integer") : is_optional(p) ? json({"number", "null"}) : json("number");
       rule[p.min_inclusive ? "minimum" : "exclusiveMinimum"] = p.min;
       rule[p.max_inclusive ? "maximum" : "exclusiveMaximum"] = p.max;
+      if (p.default_value)
+        rule["default"] = is_integer(p) ? json(static_cast<long long>(*p.default_value)) : json(*p.default_value);
     }
     json& s = sections[section];
     if (s.is_null()) s = {{"type", "object"}, {"additionalProperties", false}, {"properties", json::object()}};
