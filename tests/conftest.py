@@ -1,4 +1,6 @@
-"""Shared fixtures: where the built solver is, and the repository root."""
+"""Shared fixtures and helpers: where the built solver is, the repository root, small solver runs, and
+the workflow run as a user runs it (a config merged over config/config.yaml, into its own folder):
+the CI study and the tiny matrix, each run once per test session for every test that reads it."""
 import os
 import pathlib
 import re
@@ -6,6 +8,7 @@ import subprocess
 import sys
 
 import pytest
+import yaml
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the analysis package
@@ -59,7 +62,6 @@ def merged(base, update):
 
 def workflow_config(root, configs, out=None):
     """The config a workflow run on `configs` (merged over config/config.yaml) sees, writing to `out`."""
-    import yaml
     config = yaml.safe_load((root / "config" / "config.yaml").read_text())
     for path in configs:
         config = merged(config, yaml.safe_load((root / path).read_text()))
