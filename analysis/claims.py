@@ -117,24 +117,26 @@ def evaluate(summary, base, series):
     point = lambda **values: _one(summary, STRESS, **at(**values))  # noqa: E731
     rows = []
 
+    by_dryness = {x: curve(dryness=x) for x in (1.0, 0.3, 0.1)}
     rows.append(_row("Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1, 200 kPa)", "7",
-                     "ratio of mean stresses, fresh / X/X0 = 0.1", mean_ratio(curve(dryness=1.0), curve(dryness=0.1)),
+                     "ratio of mean stresses, fresh / X/X0 = 0.1", mean_ratio(by_dryness[1.0], by_dryness[0.1]),
                      lambda r: r > 1.0, "> 1", point(dryness=1.0) / point(dryness=0.1),
-                     curves=[curve(dryness=1.0), curve(dryness=0.1)]))
+                     curves=[by_dryness[1.0], by_dryness[0.1]]))
 
     rows.append(_row("X/X0 = 0.1 stays above X/X0 = 0.3 at strains above 0.1", "7",
                      "ratio of mean stresses from strain 0.1 on, X/X0 = 0.1 / 0.3",
-                     mean_ratio(curve(dryness=0.1), curve(dryness=0.3), from_strain=0.1),
+                     mean_ratio(by_dryness[0.1], by_dryness[0.3], from_strain=0.1),
                      lambda r: r > 1.0, "> 1", _one(summary, "stress_kPa_at_0.15", **at(dryness=0.1))
                      / _one(summary, "stress_kPa_at_0.15", **at(dryness=0.3)),
-                     note="point_value here: at strain 0.15", curves=[curve(dryness=0.1), curve(dryness=0.3)]))
+                     note="point_value here: at strain 0.15", curves=[by_dryness[0.1], by_dryness[0.3]]))
 
-    by_turgor = [mean_ratio(curve(dryness=1.0, turgor_kPa=p), curve(dryness=1.0, turgor_kPa=100)) for p in (100, 200, 300)]
+    fresh = {p: curve(dryness=1.0, turgor_kPa=p) for p in (100, 200, 300)}
+    by_turgor = [mean_ratio(fresh[p], fresh[100]) for p in (100, 200, 300)]
     rows.append(_row("Fresh cells stiffen with turgor (100 < 200 < 300 kPa)", "10",
                      "ratio of mean stresses, 300 / 100 kPa (and 200 / 100 kPa between 1 and it)", by_turgor[2],
                      lambda r: 1.0 < by_turgor[1] < r, "> 1 and increasing",
                      point(dryness=1.0, turgor_kPa=300) / point(dryness=1.0, turgor_kPa=100),
-                     curves=[curve(dryness=1.0, turgor_kPa=p) for p in (100, 200, 300)]))
+                     curves=list(fresh.values())))
 
     dry = [curve(dryness=0.1, turgor_kPa=p) for p in (100, 200, 300)]
     rows.append(_row("Extremely dried cells barely depend on turgor (curves overlap)", "10",
@@ -148,30 +150,33 @@ def evaluate(summary, base, series):
                      peak[1.0] / peak[0.1], lambda r: r > 1.0, "> 1", peak[1.0] / peak[0.1],
                      note="a peak over the whole curve: point_value is the same"))
 
-    g = [relative_rms(curve(dryness=x, G_MPa=0.18), curve(dryness=x, G_MPa=18)) for x in (1.0, 0.5, 0.1)]
+    by_g = {(x, g): curve(dryness=x, G_MPa=g) for x in (1.0, 0.5, 0.1) for g in (0.18, 18)}
+    g = [relative_rms(by_g[x, 0.18], by_g[x, 18]) for x in (1.0, 0.5, 0.1)]
     g_point = [abs(point(dryness=x, G_MPa=0.18) / point(dryness=x, G_MPa=18) - 1) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("G = 18 and 0.18 MPa give virtually overlapping curves", "15",
                      "largest relative RMS difference, G 0.18 vs 18 MPa (3 dryness levels)", _nanmax(g),
-                     lambda d: d < 0.10, "< 0.10", _nanmax(g_point),
-                     curves=[curve(dryness=x, G_MPa=G) for x in (1.0, 0.5, 0.1) for G in (0.18, 18)]))
+                     lambda d: d < 0.10, "< 0.10", _nanmax(g_point), curves=list(by_g.values())))
 
-    thin = [relative_rms(curve(dryness=x, t0_um=t), curve(dryness=x, t0_um=6)) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 12)]
+    by_t = {(x, t): curve(dryness=x, t0_um=t) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 6, 12, 100)}
+    thin = [relative_rms(by_t[x, t], by_t[x, 6]) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 12)]
     thin_point = [_spread([point(dryness=x, t0_um=t) for t in (0.1, 1, 6, 12)]) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("Wall thickness 0.1 to 12 um makes no significant difference", "16",
                      "largest relative RMS difference to the 6 um wall (3 dryness levels)", _nanmax(thin),
                      lambda d: d < 0.10, "< 0.10", _nanmax(thin_point),
-                     curves=[curve(dryness=x, t0_um=t) for x in (1.0, 0.5, 0.1) for t in (0.1, 1, 6, 12)]))
+                     curves=[c for (x, t), c in by_t.items() if t != 100]))
 
-    thick = [relative_rms(curve(dryness=x, t0_um=100), curve(dryness=x, t0_um=6)) for x in (1.0, 0.5, 0.1)]
+    thick = [relative_rms(by_t[x, 100], by_t[x, 6]) for x in (1.0, 0.5, 0.1)]
     thick_point = [abs(point(dryness=x, t0_um=100) / point(dryness=x, t0_um=6) - 1) for x in (1.0, 0.5, 0.1)]
     rows.append(_row("A 100 um wall does change the response", "16",
                      "largest relative RMS difference, 100 vs 6 um (3 dryness levels)", _nanmax(thick),
                      lambda d: d > 0.10, "> 0.10", _nanmax(thick_point),
-                     curves=[curve(dryness=x, t0_um=t) for x in (1.0, 0.5, 0.1) for t in (6, 100)]))
+                     curves=[c for (x, t), c in by_t.items() if t in (6, 100)]))
 
     size_point = [abs(point(dryness=x, D_um=200) / point(dryness=x, D_um=150) - 1) for x in (1.0, 0.5, 0.1)]
-    size = {column: _nanmax([relative_rms(curve(column, dryness=x, D_um=200), curve(column, dryness=x, D_um=150))
-                             for x in (1.0, 0.5, 0.1)]) for column in ("plate_stress_Pa", "section_stress_Pa")}
+    by_d = {(column, x, d): curve(column, dryness=x, D_um=d) for column in ("plate_stress_Pa", "section_stress_Pa")
+            for x in (1.0, 0.5, 0.1) for d in (150, 200)}
+    size = {column: _nanmax([relative_rms(by_d[column, x, 200], by_d[column, x, 150]) for x in (1.0, 0.5, 0.1)])
+            for column in ("plate_stress_Pa", "section_stress_Pa")}
     holds = [c.split("_")[0] for c, d in size.items() if d < 0.25]
     closer = min(size, key=lambda c: size[c] if np.isfinite(size[c]) else np.inf).split("_")[0]
     supports = (f"the statement holds with the {' and the '.join(holds)} stress" if holds else
@@ -182,7 +187,7 @@ def evaluate(summary, base, series):
                          f"largest relative RMS difference of the {name}, 200 vs 150 um", size[column],
                          lambda d: d < 0.25, "< 0.25", _nanmax(size_point) if column == "plate_stress_Pa" else np.nan,
                          note=f"judged with both stress definitions: {supports}",
-                         curves=[curve(column, dryness=x, D_um=d) for x in (1.0, 0.5, 0.1) for d in (150, 200)]))
+                         curves=[c for (col, x, d), c in by_d.items() if col == column]))
 
     peak_10 = {x: early_peak_kPa(series, case_of(dryness=x, plate_speed_m_s=10)) if case_of(dryness=x, plate_speed_m_s=10)
                else np.nan for x in (1.0, 0.1)}

@@ -20,6 +20,7 @@ A study with a `target` (convergence, tissue) is not part of the default target 
 it runs with `snakemake --cores 2 <target>`.
 """
 import copy
+import functools
 import itertools
 import json
 import pathlib
@@ -168,14 +169,16 @@ def check(config, root="."):
             raise ConfigError(f"{where}: a shrinkage figure needs a study that varies dryness")
         if not figure_cases(config, fig, expand(config)):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
-    check_cases(config, root)
+    check_cases(config)
 
 
 CASE_SCHEMA = pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" / "case.schema.json"
 
 
+@functools.lru_cache(maxsize=1)
 def case_schema():
-    """The solver's case schema (`cellsim schema`, kept in config/schema by scripts/update-docs)."""
+    """The solver's case schema (`cellsim schema`, kept in config/schema by scripts/update-docs); read
+    once, and only read after."""
     return json.loads(CASE_SCHEMA.read_text())
 
 
@@ -189,12 +192,11 @@ def with_defaults(case, schema):
     return case
 
 
-def check_cases(config, root="."):
+def check_cases(config):
     """Every case the studies make must be a valid cellsim case (ranges of the solver's schema),
     so a bad study value stops the workflow before any job runs, naming study, axis and value."""
     import jsonschema
-    schema = json.loads((pathlib.Path(root) / "config" / "schema" / "case.schema.json").read_text())
-    validator = jsonschema.Draft7Validator(schema)
+    validator = jsonschema.Draft7Validator(case_schema())
     for case in expand(config).values():
         error = next(iter(sorted(validator.iter_errors(case.case), key=lambda e: list(e.path))), None)
         if error is not None:
