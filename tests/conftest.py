@@ -14,6 +14,13 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the analysis package
 
 
+def between_markers(text, marker):
+    """What a document holds between its `<!-- begin marker -->` line and `<!-- end marker -->`."""
+    begin, end = f"<!-- begin {marker} -->\n", f"<!-- end {marker} -->"
+    assert begin in text and end in text, f"no {marker} markers"
+    return text.split(begin, 1)[1].split(end, 1)[0]
+
+
 @pytest.fixture(scope="session")
 def cellsim():
     """Path of the cellsim executable (scripts/test builds it and sets CELLSIM)."""

@@ -3,22 +3,19 @@ and every citation in the tree (model.md sections, the paper's equations, docs/ 
 import re
 import subprocess
 
-
-def table_between(text, marker):
-    begin, end = f"<!-- begin {marker} -->\n", f"<!-- end {marker} -->"
-    return text.split(begin, 1)[1].split(end, 1)[0]
+from conftest import between_markers
 
 
 def test_case_key_table_matches_solver(cellsim, root):
     doc = (root / "docs" / "case-reference.md").read_text()
     solver = subprocess.run([cellsim, "params"], check=True, capture_output=True, text=True).stdout
-    assert table_between(doc, "case-keys") == solver, "run scripts/update-docs"
+    assert between_markers(doc, "case-keys") == solver, "run scripts/update-docs"
 
 
 def test_output_table_matches_solver(cellsim, root):
     doc = (root / "docs" / "output-reference.md").read_text()
     solver = subprocess.run([cellsim, "outputs"], check=True, capture_output=True, text=True).stdout
-    assert table_between(doc, "output-timeseries") == solver, "run scripts/update-docs"
+    assert between_markers(doc, "output-timeseries") == solver, "run scripts/update-docs"
 
 
 def test_case_schema_file_matches_solver(cellsim, root):

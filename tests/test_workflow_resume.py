@@ -12,7 +12,7 @@ import time
 import h5py
 import pytest
 
-from conftest import TINY, assert_same_results, workflow_command, workflow_options
+from conftest import TINY, assert_same_results, between_markers, workflow_command, workflow_options
 
 pytestmark = pytest.mark.slow
 
@@ -30,7 +30,7 @@ def finished_runs(out):
 def readme_recovery(root):
     """The commands of the README's recovery block, comments stripped."""
     text = (root / "README.md").read_text()
-    block = text.split("<!-- begin recovery -->", 1)[1].split("<!-- end recovery -->", 1)[0]
+    block = between_markers(text, "recovery")
     return [shlex.split(line.split("#", 1)[0]) for line in block.splitlines() if line.startswith("snakemake")]
 
 
