@@ -3,15 +3,14 @@ the PNG and PDF are byte for byte the figure that the workflow's own drawing cod
 render.py) makes from the results, and that figure has the panels the config asks for, axes titled
 with the quantities drawn, and every curve taken from the data of one of the figure's cases."""
 import numpy as np
-from matplotlib.colors import to_rgba
 from matplotlib.collections import LineCollection, PathCollection
+from matplotlib.colors import to_rgba
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from analysis import aggregate, quantities
 from analysis.figures import common, render
 from analysis.figures.common import ordered
 from analysis.figures.curves import is_stress
-
 
 
 def coloured(line, colour):
@@ -36,6 +35,7 @@ def check_figures(config, out, root, tmp_path, figures):
 
 
 def data_panels(figure):
+    """The panels that show data (not the legend's row, not an empty slot)."""
     return [ax for ax in figure.axes if ax.axison and (ax.lines or ax.collections)]
 
 

@@ -9,6 +9,7 @@ import pytest
 from analysis import matrix, quantities
 from analysis.figures import curves, model, shapes
 from conftest import CI, workflow_config
+from figure_checks import data_panels
 
 MIN_PANEL_IN = (2.2, 2.0)  # width, height
 MAX_LEGEND_SHARE = 0.05
@@ -40,10 +41,6 @@ def draw(config, fig, root, small_run):
         return curves.draw(config, fig, series, root)
     runs = {n: small_run for n in names}
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, {n: cases[n] for n in names})
-
-
-def data_panels(figure):
-    return [ax for ax in figure.axes if ax.axison and (ax.lines or ax.collections)]
 
 
 @pytest.mark.parametrize("which", ["default", "ci"])
