@@ -1,7 +1,11 @@
 """docs/case-reference.md and docs/output-reference.md list exactly what the solver accepts and writes,
-and every citation in the tree (model.md sections, the paper's equations, docs/ files) resolves."""
+config/schema/case.schema.json is the solver's own schema, the license and citation are there, and every
+citation in the tree (model.md sections, the paper's equations, repository files) resolves."""
+import json
 import re
 import subprocess
+
+import yaml
 
 from conftest import between_markers
 
@@ -25,7 +29,6 @@ def test_case_schema_file_matches_solver(cellsim, root):
 
 
 def test_case_reference_names_every_section_of_the_schema(cellsim, root):
-    import json
     schema = json.loads(subprocess.run([cellsim, "schema"], check=True, capture_output=True, text=True).stdout)
     sections = {name for name, spec in schema["properties"].items() if spec.get("type") == "object"}
     assert {"cell", "wall", "settle", "tissue"} <= sections, sections  # the test reads what it should
@@ -39,7 +42,6 @@ def test_case_reference_names_every_section_of_the_schema(cellsim, root):
 def test_license_and_citation(root):
     """A lab adopting the repository needs a license and a citation: the paper reproduced and the
     project, at the version the build reports."""
-    import yaml
     assert (root / "LICENSE").read_text().startswith("MIT License")
     cff = yaml.safe_load((root / "CITATION.cff").read_text())
     assert cff["cff-version"] == "1.2.0" and cff["license"] == "MIT"
@@ -60,7 +62,6 @@ def test_required_key_paths_exist(cellsim):
 
 
 def test_example_case_is_valid_and_at_paper_baseline(cellsim, root):
-    import json
     example = root / "solver" / "examples" / "apple-baseline.json"
     out = subprocess.run([cellsim, "validate", str(example)], check=True, capture_output=True, text=True).stdout
     resolved = json.loads(out)
@@ -72,7 +73,6 @@ def test_example_case_is_valid_and_at_paper_baseline(cellsim, root):
 
 
 # --- citations: every "model.md §N", "Eq N" and docs/ link in the tree points at something that exists
-
 
 SOURCES = ["README.md", "Snakefile", "docs", "solver/src", "solver/tests", "solver/examples", "analysis",
            "workflow", "scripts", "config", "tests", "paper", "data/references"]
