@@ -34,6 +34,7 @@ CASES = {
     "tissue_packing_unknown.json": 'tissue.packing = "hexagonal": expected one of cubic, close',
     "tissue_negative_strength.json": "tissue.lamella_strength_MPa = -1",
     "tissue_fracture_energy_below_elastic.json": "tissue.lamella_fracture_energy_J_m2 = 0.01",
+    "smoothing_length_twice.json": "fluid.h0_um = 8 and fluid.h_over_dx = 1.2 both set the smoothing length",
 }
 
 # workflow config (merged over config/config.yaml) -> what the message must name: the problem, and the

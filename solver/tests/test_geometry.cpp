@@ -80,6 +80,30 @@ TEST(Geometry, DerivedDefaultsFollowTheMesh) {
   EXPECT_NEAR(*big.h0_m / 6.8e-6, big_cell.fluid_spacing_m / ref_cell.fluid_spacing_m, 1e-12);
 }
 
+TEST(Geometry, SmoothingRatioSetsH0FromTheSpacing) {
+  Params paper = defaults_with(150, 2067, 3082);
+  const Cell cell = build_cell(paper);
+  EXPECT_NEAR(*paper.h_over_dx, 0.888, 0.001);  // the paper's 6.8 um at its spacing (~23 neighbours)
+  EXPECT_NEAR(*paper.h0_m, *paper.h_over_dx * cell.fluid_spacing_m, 1e-18);
+  for (const double ratio : {1.2, 1.5}) {  // a finer cell keeps the ratio, not the paper's h0 rule
+    Params p = validate_case({{"fluid", {{"h_over_dx", ratio}}}, {"cell", {{"n_fluid", 8717}, {"n_wall", 4134}}}});
+    const Cell fine = build_cell(p);
+    EXPECT_DOUBLE_EQ(*p.h0_m, ratio * fine.fluid_spacing_m);
+    EXPECT_DOUBLE_EQ(*p.h_over_dx, ratio);
+  }
+}
+
+TEST(Geometry, H0AndSmoothingRatioTogetherAreRefused) {
+  Params p = validate_case({{"fluid", {{"h_over_dx", 1.2}, {"h0_um", 8.0}}}});
+  try {
+    build_cell(p);
+    FAIL() << "both keys accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fluid.h0_um"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fluid.h_over_dx"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Geometry, ExplicitR0AndFillGapAreKept) {
   nlohmann::json doc = {{"coupling", {{"r0_um", 5.0}}}, {"cell", {{"fill_gap_um", 1.0}}}};
   Params p = validate_case(doc);

@@ -40,7 +40,8 @@ struct Params {
   double viscosity_Pa_s = 0;            // mu, Eq 4
   double bulk_modulus_Pa = 0;           // K, Eq 7
   double eos_exponent = 0;              // 7 in Eq 7
-  std::optional<double> h0_m;           // initial smoothing length, Eq 6 (auto: 6.8 um * dx/dx_ref)
+  std::optional<double> h0_m;           // initial smoothing length, Eq 6 (auto: h_over_dx * dx)
+  std::optional<double> h_over_dx;      // smoothing ratio h0 / dx (auto: 6.8 um / dx_ref, the paper's 0.888)
 
   // wall, Table 2
   double G_Pa = 0;                      // shear modulus, Eq 15

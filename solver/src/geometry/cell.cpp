@@ -94,7 +94,16 @@ Cell build_cell(Params& p) {
                                   p.fill_gap_m, p.coupling_model);
   p.r0_m = g.r0_m;
   p.fill_gap_m = g.fill_gap_m;
-  if (!p.h0_m) p.h0_m = kReferenceH0_m * g.fluid_spacing_m / reference_fluid_spacing();
+  if (p.h0_m && p.h_over_dx) {
+    std::ostringstream msg;
+    msg << "fluid.h0_um = " << *p.h0_m * 1e6 << " and fluid.h_over_dx = " << *p.h_over_dx
+        << " both set the smoothing length: set one of them";
+    throw InputError(msg.str());
+  }
+  if (!p.h0_m)  // the paper's h0 scaled with dx (as written, so the default's bits stay those of the rule)
+    p.h0_m = p.h_over_dx ? *p.h_over_dx * g.fluid_spacing_m
+                         : kReferenceH0_m * g.fluid_spacing_m / reference_fluid_spacing();
+  p.h_over_dx = *p.h0_m / g.fluid_spacing_m;
 
   Cell cell;
   const double cell_volume = 4.0 / 3.0 * M_PI * radius * radius * radius;

@@ -18,7 +18,7 @@ struct Cell {
 };
 
 // Builds the cell and fills in the derived parameters of p that are still unset
-// (coupling.r0_um, cell.fill_gap_um, fluid.h0_um). Throws InputError if the geometry is impossible.
+// (coupling.r0_um, cell.fill_gap_um, fluid.h0_um, fluid.h_over_dx). Throws InputError if the geometry is impossible.
 Cell build_cell(Params& p);
 
 // The N points of a cubic lattice (spacing 1, one point at the origin) nearest the origin, ties
