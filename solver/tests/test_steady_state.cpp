@@ -65,3 +65,17 @@ TEST(SteadyState, TheCriterionComesFromTheCaseAndWaitsForTheRampOnlyWhenSomethin
   Params fresh = validate_case(nlohmann::json::parse(R"({"drying": {"dryness": 1.0}})"));
   EXPECT_EQ(steady_state_criterion(fresh).earliest_s, 0.0);
 }
+
+// The rms-speed threshold follows the coupling unless the case sets it (issue: a user who only switches
+// the coupling gets a drying that can end): the pressure coupling's fluid at rest jitters at ~0.03 m/s.
+TEST(SteadyState, TheRmsSpeedThresholdFollowsTheCouplingUnlessSet) {
+  const auto threshold = [](const char* text) {
+    const Params p = validate_case(nlohmann::json::parse(text));
+    EXPECT_TRUE(p.steady_rms_speed_m_s.has_value()) << text;  // resolved, so result files record it
+    return steady_state_criterion(p).rms_speed_m_s;
+  };
+  EXPECT_DOUBLE_EQ(threshold("{}"), 0.02);
+  EXPECT_DOUBLE_EQ(threshold(R"({"coupling": {"model": "pressure"}})"), 0.05);
+  EXPECT_DOUBLE_EQ(threshold(R"({"coupling": {"model": "pressure"}, "drying": {"steady_rms_speed_m_s": 0.03}})"), 0.03);
+  EXPECT_DOUBLE_EQ(threshold(R"({"drying": {"steady_rms_speed_m_s": null}})"), 0.02);
+}

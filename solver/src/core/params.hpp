@@ -68,7 +68,7 @@ struct Params {
   double steady_window_s = 0;           // steady_state.hpp: the window the criterion holds over
   double steady_pressure_tolerance = 0; // |P_mean - P_T(X)| / P_T0
   double steady_volume_tolerance = 0;   // (V_max - V_min) / V over the window
-  double steady_rms_speed_m_s = 0;      // sqrt(2 KE_fluid / M_fluid)
+  std::optional<double> steady_rms_speed_m_s;  // sqrt(2 KE_fluid / M_fluid) (auto: by coupling, steady_state.hpp)
   double drying_Lp_m_per_s_Pa = 0;      // L_p, Eq 11
   double ramp_time_s = 0;               // smoothstep ramp of L_ref, model.md §5
   double pressure_closure_time_s = 0;   // relaxation time of the wall-pressure closure (0: off)

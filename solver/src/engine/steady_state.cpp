@@ -5,13 +5,19 @@
 
 namespace cellsim {
 
+double default_steady_rms_speed_m_s(Choice coupling_model) { return coupling_model == kPressure ? 0.05 : 0.02; }
+
+void resolve_steady_state_defaults(Params& p) {
+  if (!p.steady_rms_speed_m_s) p.steady_rms_speed_m_s = default_steady_rms_speed_m_s(p.coupling_model);
+}
+
 SteadyStateCriterion steady_state_criterion(const Params& p) {
   // A cell without turgor is judged against 1 kPa, so that its tolerance is not zero.
   const double pressure_scale_Pa = std::max(p.turgor_Pa, 1e3);
   return {p.turgor_Pa * p.dryness,
           p.steady_pressure_tolerance * pressure_scale_Pa,
           p.steady_volume_tolerance,
-          p.steady_rms_speed_m_s,
+          p.steady_rms_speed_m_s.value_or(default_steady_rms_speed_m_s(p.coupling_model)),
           p.steady_window_s,
           p.dryness < 1.0 ? p.ramp_time_s : 0.0};  // a fresh cell has nothing to ramp
 }

@@ -18,6 +18,14 @@ struct SteadyStateCriterion {
   double earliest_s;             // the window may not begin before this (the end of the ramp)
 };
 
+// The rms speed below which a fluid counts as at rest, for a coupling: the fluid of the default cell
+// at rest jitters at ~0.01 m/s rms with the LJ layer and ~0.03 with the pressure coupling
+// (docs/model-closures.md), while drying transients run at 0.1-2 m/s.
+double default_steady_rms_speed_m_s(Choice coupling_model);
+
+// Fills in the drying keys that follow from the case (drying.steady_rms_speed_m_s), if unset.
+void resolve_steady_state_defaults(Params& p);
+
 SteadyStateCriterion steady_state_criterion(const Params& p);
 
 // True if the records, the last one being now, show a steady state over the whole window.

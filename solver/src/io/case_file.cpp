@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "engine/steady_state.hpp"
 #include "io/case_schema.hpp"
 
 namespace cellsim {
@@ -197,6 +198,7 @@ Params validate_case(const json& doc) {
       assign(*spec, value, p);
     }
   }
+  resolve_steady_state_defaults(p);  // a derived key that needs no geometry (the others: build_cell)
   return p;
 }
 
