@@ -64,6 +64,32 @@ def load_partition(compression, window=LOAD_WINDOW):
             w["load_fluid_N"].sum() / held if held else np.nan)
 
 
+ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transfer_energy_J", "closure_energy_J",
+                "drive_energy_J")
+
+
+def energy_account(drying, compression):
+    """The energy account's verdicts (docs/model.md): the residual at the end of drying over all the
+    energy that flowed in drying (the sum of the flows' magnitudes), and over the compression the residual's
+    change and the losses as fractions of the plate work. NaN where a run has no such stage or no account."""
+    out = {}
+    if "energy_residual_J" not in drying:
+        return out
+    dried = drying.iloc[-1]
+    flowed = sum(abs(dried[name]) for name in ENERGY_FLOWS)
+    out["drying_energy_residual_over_flow"] = dried["energy_residual_J"] / flowed if flowed else np.nan
+    if len(compression):
+        change = compression.iloc[-1] - dried[compression.columns]  # over the compression
+        work = change["plate_work_J"]
+        out.update({
+            "compression_plate_work_nJ": work * 1e9,
+            "compression_energy_residual_over_work": change["energy_residual_J"] / work if work else np.nan,
+            "compression_viscous_loss_over_work": change["viscous_loss_J"] / work if work else np.nan,
+            "compression_damping_loss_over_work": change["damping_loss_J"] / work if work else np.nan,
+        })
+    return out
+
+
 def summarise(ts):
     """Per-case metrics: end of drying, stresses at fixed strains, peak force, compression changes."""
     drying, compression = ts[ts["stage"] == 0], ts[ts["stage"] == 1]
@@ -100,6 +126,7 @@ def summarise(ts):
         force_ratio, fluid_share = load_partition(compression)
         out["load_F_over_pA"] = force_ratio
         out["load_fluid_share"] = fluid_share
+    out.update(energy_account(drying, compression))
     return out
 
 

@@ -39,6 +39,21 @@ QUANTITIES = {
     "lamella_intact": ("middle-lamella bonds intact", 1.0),
     "tissue_volume_m3": ("tissue volume (hull) [10^6 um^3]", 1e12),
     "porosity": ("porosity", 1.0),
+    # the energy account (docs/model.md §8)
+    "internal_energy_J": ("fluid internal energy [nJ]", 1e9),
+    "wall_stiff_energy_J": ("wall stiff-spring energy [nJ]", 1e9),
+    "wall_contraction_energy_J": ("wall contraction-spring energy [nJ]", 1e9),
+    "wall_bending_energy_J": ("wall bending energy [nJ]", 1e9),
+    "coupling_energy_J": ("wall-fluid LJ energy [nJ]", 1e9),
+    "plate_energy_J": ("plate-spring energy [nJ]", 1e9),
+    "stored_energy_J": ("stored energy [nJ]", 1e9),
+    "plate_work_J": ("plate work [nJ]", 1e9),
+    "viscous_loss_J": ("viscous loss [nJ]", 1e9),
+    "damping_loss_J": ("wall damping loss [nJ]", 1e9),
+    "mass_transfer_energy_J": ("energy carried by mass transfer [nJ]", 1e9),
+    "closure_energy_J": ("energy of the wall-pressure closure [nJ]", 1e9),
+    "drive_energy_J": ("energy put in by the drying ramp [nJ]", 1e9),
+    "energy_residual_J": ("energy residual [nJ]", 1e9),
 }
 
 # Derived by analysis/aggregate.py from the solver's series, for every run alike.

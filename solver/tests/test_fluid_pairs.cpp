@@ -42,6 +42,7 @@ FluidParticles random_fluid(int n_side, double dx, unsigned seed) {
 struct PlainSums {
   Eigen::Matrix3Xd force;
   Eigen::VectorXd drho;
+  double viscous_loss_W = 0;  // -F_visc,ij . v_ij summed over pairs: what Eq 4 takes out of the kinetic energy
   int pairs_in_support = 0;
 };
 
@@ -56,8 +57,9 @@ PlainSums plain_pair_sums(const FluidParticles& f, const CubicSplineKernel& kern
       ++s.pairs_in_support;
       const double g = kernel.dW_dr_over_r(xij.norm());
       const double Ai = eos.pressure(f.rho[i]) / (f.rho[i] * f.rho[i]), Aj = eos.pressure(f.rho[j]) / (f.rho[j] * f.rho[j]);
-      const Eigen::Vector3d fij = -f.m[i] * f.m[j] * (Ai + Aj) * g * xij +
-                                  f.m[i] * f.m[j] * 2 * viscosity / (f.rho[i] * f.rho[j]) * g * vij;
+      const Eigen::Vector3d viscous = f.m[i] * f.m[j] * 2 * viscosity / (f.rho[i] * f.rho[j]) * g * vij;
+      const Eigen::Vector3d fij = -f.m[i] * f.m[j] * (Ai + Aj) * g * xij + viscous;
+      s.viscous_loss_W -= viscous.dot(vij);
       s.force.col(i) += fij;
       s.force.col(j) -= fij;
       s.drho[i] += f.m[j] * g * vij.dot(xij);
@@ -75,6 +77,8 @@ void expect_plain_sums(const FluidParticles& f, const EquationOfState& eos, cons
   ASSERT_GT(drho_scale, 0.0);
   EXPECT_LT((rates.force - plain.force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
   EXPECT_LT((rates.drho_dt - plain.drho).cwiseAbs().maxCoeff(), 1e-12 * drho_scale);
+  ASSERT_GT(plain.viscous_loss_W, 0.0);  // the viscous force dissipates: the test below can fail
+  EXPECT_NEAR(rates.viscous_loss_W, plain.viscous_loss_W, 1e-12 * plain.viscous_loss_W);
   for (Eigen::Index i = 0; i < f.size(); ++i) EXPECT_DOUBLE_EQ(rates.pressure[i], eos.pressure(f.rho[i])) << i;
 }
 

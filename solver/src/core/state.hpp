@@ -39,6 +39,18 @@ struct Plates {
   double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
 };
 
+// The energy account's running integrals since t = 0 (engine/energy_account.hpp), kept with the state so
+// that a continued run carries them. Each is the energy a non-conservative term put into the particles.
+struct EnergyFlows {
+  double initial_J = 0;        // stored energy at t = 0 (the cell at rest)
+  double plate_work_J = 0;     // work of the top plate on the wall (Eq 22, the plate moves)
+  double viscous_loss_J = 0;   // dissipated by Eq 4 (positive)
+  double damping_loss_J = 0;   // dissipated by Eq 16 (positive)
+  double mass_transfer_J = 0;  // carried across the wall by Eq 11's water (negative when water leaves)
+  double closure_J = 0;        // changed by the wall-pressure closure's mass scaling (drying only)
+  double drive_J = 0;          // put in by the drying ramp of P_T and L_ref (explicit time dependence)
+};
+
 struct State {
   FluidParticles fluid;
   WallParticles wall;
@@ -52,6 +64,7 @@ struct State {
   double smoothing_length_m = 0;  // h, Eq 6
   double initial_fluid_mass_kg = 0;   // M_f0: fluid mass at the start of drying (after the settle)
   double reference_diameter_m = 0;    // D0 of Eq 6: equivalent diameter of the wall at the start
+  EnergyFlows energy;
   // Diagnostics of the last force evaluation (recorded, not state to integrate).
   double wall_tension_N_m = 0;    // mean membrane tension: sum(tension x length) / (2 area)
   double wall_pressure_Pa = 0;    // outward LJ push on the wall along its normals / area

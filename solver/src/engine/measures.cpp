@@ -91,6 +91,34 @@ const std::vector<Quantity>& quantities() {
        &Record::tissue_volume_m3},
       {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
        &Record::porosity},
+      // The energy account (docs/model.md): stored energies, then what the other terms put in since t = 0.
+      {"internal_energy_J", "J", "fluid internal energy, sum of m e(rho), de = P / rho^2 drho with Eq 7's P",
+       &Record::internal_energy_J},
+      {"wall_stiff_energy_J", "J", "energy of Eq 15's springs, (G t0 l0^2 / sqrt 3)((lambda^2 - 1)/2 - ln lambda) per bond",
+       &Record::wall_stiff_energy_J},
+      {"wall_contraction_energy_J", "J", "energy of Eq 21's springs, k_wc (l - L_ref)^2 / 2 per bond",
+       &Record::wall_contraction_energy_J},
+      {"wall_bending_energy_J", "J", "Eq 20's bending energy E_b", &Record::wall_bending_energy_J},
+      {"coupling_energy_J", "J", "potential of the LJ wall-fluid forces, zero at r_c (0 for the pressure coupling)",
+       &Record::coupling_energy_J},
+      {"plate_energy_J", "J", "energy of Eq 22's plate springs, k_pw overlap^2 / 2", &Record::plate_energy_J},
+      {"stored_energy_J", "J", "kinetic + internal + wall (stiff, contraction, bending) + coupling + plate energies",
+       &Record::stored_energy_J},
+      {"plate_work_J", "J", "work of the top plate on the wall since t = 0, integral of F_top x plate speed",
+       &Record::plate_work_J},
+      {"viscous_loss_J", "J", "energy dissipated by the viscous forces (Eq 4) since t = 0", &Record::viscous_loss_J},
+      {"damping_loss_J", "J", "energy dissipated by the wall damping (Eq 16) since t = 0", &Record::damping_loss_J},
+      {"mass_transfer_energy_J", "J",
+       "energy Eq 11's water brought in since t = 0, integral of dm/dt (v^2/2 + e + P/rho) (negative: it left)",
+       &Record::mass_transfer_energy_J},
+      {"closure_energy_J", "J", "energy the wall-pressure closure's mass scaling added since t = 0 (drying only)",
+       &Record::closure_energy_J},
+      {"drive_energy_J", "J", "energy the drying ramp of P_T and L_ref added at fixed particles since t = 0",
+       &Record::drive_energy_J},
+      {"energy_residual_J", "J",
+       "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive): the error "
+       "of the energy account",
+       &Record::energy_residual_J},
   };
   return q;
 }
@@ -105,6 +133,23 @@ const std::vector<CellQuantity>& cell_quantities() {
 }
 
 double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
+
+void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Record& r) {
+  r.internal_energy_J = stored.internal_J;
+  r.wall_stiff_energy_J = stored.wall_stiff_J;
+  r.wall_contraction_energy_J = stored.wall_contraction_J;
+  r.wall_bending_energy_J = stored.wall_bending_J;
+  r.coupling_energy_J = stored.coupling_J;
+  r.plate_energy_J = stored.plate_J;
+  r.stored_energy_J = stored.total_J();
+  r.plate_work_J = flows.plate_work_J;
+  r.viscous_loss_J = flows.viscous_loss_J;
+  r.damping_loss_J = flows.damping_loss_J;
+  r.mass_transfer_energy_J = flows.mass_transfer_J;
+  r.closure_energy_J = flows.closure_J;
+  r.drive_energy_J = flows.drive_J;
+  r.energy_residual_J = energy_residual_J(stored, flows);
+}
 
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
                const Params& p, const EquationOfState& eos, const LoadPartition& load) {

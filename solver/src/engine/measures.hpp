@@ -6,6 +6,7 @@
 
 #include "core/params.hpp"
 #include "core/state.hpp"
+#include "engine/energy_account.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
 #include "geometry/wall_mesh.hpp"
@@ -26,6 +27,11 @@ struct Record {
   double pressure_load_N, load_fluid_N, load_wall_N;
   double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa, footprint_stress_Pa;
   double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
+  // The energy account (energy_account.hpp): stored energies, the flows since t = 0, the residual.
+  double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
+  double coupling_energy_J, plate_energy_J, stored_energy_J;
+  double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
+  double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
   std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;
 };
@@ -57,6 +63,9 @@ inline double nominal_strain(double contact_height_m, double height_m) {
 // top plate's load partition from the forces of the last step (load_partition.hpp).
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
                const Params& p, const EquationOfState& eos, const LoadPartition& load);
+
+// Fills in r's energy account from the stored energy now and the flows since t = 0.
+void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Record& r);
 
 std::string output_reference_markdown();
 

@@ -210,6 +210,18 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
   s_.reference_diameter_m = equivalent_diameter_m(wall_surface(tissue.wall_x, mesh_).volume_m3);
   compute_rates();
+  start_energy_account();
+}
+
+void Simulation::start_energy_account() {
+  s_.energy = EnergyFlows{};
+  s_.energy.initial_J = stored_energy_now().total_J();
+}
+
+StoredEnergy Simulation::stored_energy_now() const {
+  const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
+  return stored_energy(s_, {mesh_, bond_law_, ramp, bending_, p_.coupling_model == kPressure ? nullptr : &lj_,
+                            neighbours_.fluid_wall(), plate_law_, eos()});
 }
 
 void Simulation::set_threads(int threads) {
@@ -285,6 +297,7 @@ void Simulation::fluid_terms() {
   moved_since_lists_m_ = 0;
   timer_.lap(Phase::Neighbours);
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
+  energy_rates_.viscous_loss_W = fluid_.viscous_loss_W;
   timer_.lap(Phase::FluidPairs);
 }
 
@@ -296,13 +309,21 @@ void Simulation::mass_transfer() {
     mass_rates(s_.fluid, fluid_.pressure, surface_.cell_area_m2[c], static_cast<int>(cells_.fluid_count(c)),
                Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_, fluid_.drho_dt);
   });
+  energy_rates_.mass_transfer_W = mass_transfer_power_W(s_.fluid, dm_dt_, eos(), threads_);
 }
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
   const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
-  const double tension_length = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, threads_, wall_force_, bond_scratch_);
-  s_.wall_tension_N_m = tension_length / (2.0 * surface_.area_m2);
+  const BondSums bonds = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, threads_, wall_force_, bond_scratch_);
+  s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
+  energy_rates_.damping_loss_W = bonds.damping_loss_W;
+  // The drying ramp moves P_T and L_ref (drying.hpp): the stored energy changes at fixed particles.
+  const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
+  energy_rates_.drive_W =
+      ramp_rate == 0 ? 0.0
+                     : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * (1.0 - p_.dryness) * ramp_rate,
+                                     bonds.contraction_times_l0_N_m, p_.contraction_ratio * (1.0 - p_.dryness) * ramp_rate);
   timer_.lap(Phase::WallBonds);
   bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
   timer_.lap(Phase::Bending);
@@ -349,12 +370,15 @@ std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
 // Eq 22 during compression; the first contact of the top plate starts the plate strain.
 void Simulation::plate_terms() {
   Plates& plates = s_.plates;
+  energy_rates_.plate_W = 0;
   if (!plates.active) return;
   add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
+  energy_rates_.plate_W = plates.force_top_N * p_.plate_speed_m_s;  // the wall pushes up, the plate moves down
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
 void Simulation::kick(double half_dt) {
+  add_half_kick(energy_rates_, half_dt, s_.energy);
   kick_factor_.resize(s_.fluid.size());
   for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
     kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, begin, end, kick_factor_, s_.fluid);
@@ -390,10 +414,13 @@ void Simulation::apply_pressure_closure() {
     factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], mean_pressure, p_.dt_s, p_.pressure_closure_time_s);
     any = any || factor[c] != 1.0;
   }
-  if (any)
-    for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
-      scale(factor[c], begin, end, s_.fluid.m);
-    });
+  if (!any) return;
+  const EquationOfState state_eos = eos();
+  for (int c = 0; c < cells_.count(); ++c)
+    s_.energy.closure_J += mass_scaling_energy_J(s_.fluid, state_eos, factor[c], cells_.fluid[c], cells_.fluid[c + 1]);
+  for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
+    scale(factor[c], begin, end, s_.fluid.m);
+  });
 }
 
 void Simulation::start_at_rest() {
@@ -405,6 +432,7 @@ void Simulation::start_at_rest() {
   s_.reference_diameter_m = equivalent_diameter_m(surface_.volume_m3);
   neighbours_.invalidate();
   compute_rates();
+  start_energy_account();
 }
 
 std::string Simulation::where() const {
@@ -541,7 +569,9 @@ void Simulation::restore(const State& saved) {
 
 Record Simulation::record() const {
   const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, plate_law_, s_.plates);
-  return measure(s_, mesh_, cells_, surface_, p_, eos(), load);
+  Record r = measure(s_, mesh_, cells_, surface_, p_, eos(), load);
+  add_energy_account(stored_energy_now(), s_.energy, r);
+  return r;
 }
 
 double Simulation::nominal_strain() const {

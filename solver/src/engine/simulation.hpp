@@ -8,6 +8,7 @@
 
 #include "core/params.hpp"
 #include "core/state.hpp"
+#include "engine/energy_account.hpp"
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
 #include "geometry/neighbours.hpp"
@@ -92,6 +93,8 @@ class Simulation {
   void apply_pressure_closure();
   void check_state() const;
   void check_time_step() const;
+  void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference
+  StoredEnergy stored_energy_now() const;
   std::string where() const;
 
   int threads_ = 1;
@@ -113,6 +116,7 @@ class Simulation {
   FluidRates fluid_;
   Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
   Eigen::VectorXd dm_dt_;
+  EnergyRates energy_rates_;  // of the non-conservative terms, at the current positions
   Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation
   BondScratch bond_scratch_;
   WallFluidScratch lj_scratch_;

@@ -22,6 +22,18 @@ constexpr PlateField kPlateFields[] = {
     {"plate_first_contact_top_z_m", &Plates::first_contact_top_z_m},
 };
 
+// The energy account's running integrals (state.hpp), stored as attributes under these names.
+struct EnergyField {
+  const char* name;
+  double EnergyFlows::*member;
+};
+constexpr EnergyField kEnergyFields[] = {
+    {"energy_initial_J", &EnergyFlows::initial_J},           {"energy_plate_work_J", &EnergyFlows::plate_work_J},
+    {"energy_viscous_loss_J", &EnergyFlows::viscous_loss_J}, {"energy_damping_loss_J", &EnergyFlows::damping_loss_J},
+    {"energy_mass_transfer_J", &EnergyFlows::mass_transfer_J}, {"energy_closure_J", &EnergyFlows::closure_J},
+    {"energy_drive_J", &EnergyFlows::drive_J},
+};
+
 }  // namespace
 
 void write_drying_summary(hid_t parent, const DryingSummary& d) {  // read back in read_saved_run
@@ -48,6 +60,7 @@ void write_state(hid_t parent, const State& s) {
   h5::set_attr(g.id(), "plates_active", static_cast<std::int64_t>(s.plates.active));
   h5::set_attr(g.id(), "plate_contacts", static_cast<std::int64_t>(s.plates.contacts));
   for (const auto& field : kPlateFields) h5::set_attr(g.id(), field.name, s.plates.*field.member);
+  for (const auto& field : kEnergyFields) h5::set_attr(g.id(), field.name, s.energy.*field.member);
   h5::write_points(g.id(), "wall_positions", s.wall.x);
   h5::write_points(g.id(), "wall_velocities", s.wall.v);
   h5::write_points(g.id(), "fluid_positions", s.fluid.x);
@@ -91,6 +104,7 @@ SavedRun read_saved_run(const std::string& path) {
     s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
     s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));
     for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
+    for (const auto& field : kEnergyFields) s.energy.*field.member = h5::get_attr_double(g.id(), field.name);
     s.wall.x = h5::read_points(g.id(), "wall_positions");
     s.wall.v = h5::read_points(g.id(), "wall_velocities");
     s.fluid.x = h5::read_points(g.id(), "fluid_positions");

@@ -11,6 +11,13 @@ inline double smoothstep_ramp(double t, double ramp_time) {
   return u * u * (3.0 - 2.0 * u);
 }
 
+// d(ramp)/dt: 6 u (1 - u) / ramp_time during the ramp, 0 after it.
+inline double smoothstep_ramp_rate(double t, double ramp_time) {
+  if (ramp_time <= 0 || t >= ramp_time) return 0.0;
+  const double u = t / ramp_time;
+  return 6.0 * u * (1.0 - u) / ramp_time;
+}
+
 // P_T at drying progress `ramp` in [0, 1]: P_T0 fresh, P_T(X) = P_T0 X at the end (model.md §5).
 // A jump from P_T0 to P_T(X) at t = 0 would drop every particle's pressure at once and shock the
 // settled cell as the old start did; the osmotic potential follows it (Pi = -P_T).

@@ -50,10 +50,12 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
   return first_row;
 }
 
-// The pairs of rows [begin, end) added to sums, four pairs of a row at a time (one per lane). The
-// differences x_ij, v_ij are taken on the records, before the transpose: fewer registers stay live.
+// The pairs of rows [begin, end) added to sums, four pairs of a row at a time (one per lane), and the
+// power their viscous forces dissipate added to viscous_loss (F_visc,ij . v_ij = viscous |v_ij|^2 <= 0
+// is what the pair adds to the kinetic energy). The differences x_ij, v_ij are taken on the records,
+// before the transpose: fewer registers stay live.
 void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
-                    const double* records, int begin, int end, double* sums) {
+                    const double* records, int begin, int end, double* sums, double& viscous_loss) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
@@ -65,7 +67,7 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
     const double4 x_i = simd::load(position + kRecord * i), v_i = simd::load(velocity + kRecord * i);
     const double4 mi = simd::broadcast(factors[kRecord * i]), Ai = simd::broadcast(factors[kRecord * i + 1]),
                   Vi = simd::broadcast(factors[kRecord * i + 2]);
-    double4 sum_i = {}, drho_i = {};
+    double4 sum_i = {}, drho_i = {}, loss_i = {};
     assert((offset[i + 1] - offset[i]) % kPairLanes == 0);
     for (int q = offset[i]; q < offset[i + 1]; q += kPairLanes) {
       const int* j = index + q;
@@ -83,6 +85,7 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
       drho_i += sph::continuity_rate(v_dot_grad, mj);
       const double4 pressure = g * sph::pressure_coefficient(mi, mj, Ai, Aj);
       const double4 viscous = g * sph::viscous_coefficient(mu_sum, Vi, Vj);
+      loss_i -= viscous * (vij.field[0] * vij.field[0] + vij.field[1] * vij.field[1] + vij.field[2] * vij.field[2]);
       // Transposed back, lane l is j's record (F_ij, -drho_j): subtracted from j's sums it gives
       // F_ji = -F_ij and adds drho_j; added to i's, its first three entries give F_ij.
       const Lanes on_j(pressure * xij.field[0] + viscous * vij.field[0],
@@ -96,6 +99,7 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
     }
     sum_i[3] = simd::sum(drho_i);
     simd::store(sums + kSum * i, simd::load(sums + kSum * i) + sum_i);
+    viscous_loss += simd::sum(loss_i);
   }
 }
 
@@ -141,7 +145,8 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
-               double viscosity_Pa_s, int r0, int r1, int written, FluidRates& out, Eigen::Matrix4Xd& sums) {
+               double viscosity_Pa_s, int r0, int r1, int written, FluidRates& out, Eigen::Matrix4Xd& sums,
+               double& viscous_loss) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
   for (int c0 = r0; c0 < r1; c0 += kChunkRows) {
@@ -156,7 +161,7 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
       sums.middleCols(zeroed, reach - zeroed).setZero();
       zeroed = reach;
     }
-    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), c0, c1, sums.data());
+    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), c0, c1, sums.data(), viscous_loss);
   }
 }
 
@@ -200,6 +205,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.halo_mark.resize(static_cast<std::size_t>(threads));
   out.halo_build = pairs.build;
   out.written.resize(static_cast<std::size_t>(threads));
+  out.block_viscous_loss_W.assign(static_cast<std::size_t>(threads), 0.0);
   const auto run_blocks = [&](int first, int stride) {
     if (new_halos) {
       for (int t = first; t < threads; t += stride) {
@@ -228,7 +234,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
       add_block(f, pairs, kernel, eos, viscosity_Pa_s, out.first_row[b], out.first_row[b + 1], out.written[b], out,
-                out.thread_sums[b]);
+                out.thread_sums[b], out.block_viscous_loss_W[b]);
     }
   };
   if (threads == 1)
@@ -238,6 +244,8 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.force.resize(3, n);
   out.drho_dt.resize(n);
   for_blocks(threads, n, [&](Eigen::Index begin, Eigen::Index end) { add_thread_sums(begin, end, out); });
+  out.viscous_loss_W = 0;
+  for (double part : out.block_viscous_loss_W) out.viscous_loss_W += part;
 }
 
 }  // namespace cellsim

@@ -16,6 +16,7 @@ struct FluidRates {
   Eigen::Matrix3Xd force;   // [N]
   Eigen::VectorXd drho_dt;  // continuity part only [kg/m^3/s]
   Eigen::VectorXd pressure; // EOS pressure [Pa]
+  double viscous_loss_W = 0; // power Eq 4 takes out of the fluid, sum over pairs of -F_visc,ij . v_ij
   // Scratch of the pair loop, kept to avoid reallocation: one record per particle, and the sums
   // of each thread (fluid_pairs.cpp says what they hold).
   Eigen::Matrix<double, 12, Eigen::Dynamic> records;
@@ -27,6 +28,7 @@ struct FluidRates {
   std::vector<std::vector<char>> halo_mark;
   long halo_build = -1;
   std::vector<int> written;  // block t wrote records [first_row[t], written[t]) before the barrier
+  std::vector<double> block_viscous_loss_W;  // per block, added in block order
 };
 
 // Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).

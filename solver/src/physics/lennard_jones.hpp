@@ -18,6 +18,18 @@ struct LennardJones {
     const double f = f0 * (q2 * q2 - q2) * inv_r2;
     return r2 < cutoff_m * cutoff_m ? f : 0.0;
   }
+
+  // The potential phi(r) of this force (-dphi/dr = f r, the energy account): f0 G(q) with
+  // G(q) = q^4 / 8 - q^2 / 4, q = (r0/r)^2, shifted to zero at the cut-off and continuous at r0:
+  // attraction f0_a (G(q) - G(q_c)); repulsion f0_r (G(q) - G(1)) + f0_a (G(1) - G(q_c)), q_c = (r0/r_c)^2.
+  double potential_J(double r2) const {
+    const double rc2 = cutoff_m * cutoff_m;
+    if (r2 >= rc2) return 0.0;
+    const auto G = [](double q) { return 0.125 * q * q * q * q - 0.25 * q * q; };
+    const double r0_2 = r0_m * r0_m, q = r0_2 / r2, q_c = r0_2 / rc2;
+    if (q <= 1.0) return attraction_f0_N_m * (G(q) - G(q_c));
+    return repulsion_f0_N_m * (G(q) - G(1.0)) + attraction_f0_N_m * (G(1.0) - G(q_c));
+  }
 };
 
 }  // namespace cellsim

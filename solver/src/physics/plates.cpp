@@ -20,6 +20,16 @@ PlateOverlap plate_overlap(const Eigen::Vector3d& x, const PlateLaw& law, const 
   return o;
 }
 
+double plate_energy_J(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const Plates& plates) {
+  if (!plates.active) return 0.0;
+  double e = 0;
+  for (Eigen::Index k = 0; k < wall_x.cols(); ++k) {
+    const PlateOverlap o = plate_overlap(wall_x.col(k), law, plates);
+    e += 0.5 * law.stiffness_N_m * (o.top_m * o.top_m + o.bottom_m * o.bottom_m);
+  }
+  return e;
+}
+
 namespace {
 
 struct PlateLoad {

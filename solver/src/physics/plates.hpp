@@ -26,6 +26,9 @@ struct PlateOverlap {
 };
 PlateOverlap plate_overlap(const Eigen::Vector3d& x, const PlateLaw& law, const Plates& plates);
 
+// The energy stored in Eq 22's springs, sum of k_pw overlap^2 / 2 over both plates (the energy account).
+double plate_energy_J(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const Plates& plates);
+
 // Adds the plate forces to wall_force and sets plates.force_top_N, force_bottom_N and contacts.
 // threads: as `cellsim run --threads` (the plate forces are summed in fixed blocks, threads.hpp).
 void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force,

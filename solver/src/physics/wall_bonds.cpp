@@ -13,54 +13,60 @@ namespace {
 // lambda that is also handed to other threads they would be re-read after every store.
 
 // Passes 1 and 2 for bonds [begin, end): squared lengths, then tension / length over the flat array
-// (vectorised: it holds the square roots and divisions).
-void tension_over_length(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                         Eigen::Index begin, Eigen::Index end, double* t_over_l) {
+// (vectorised: it holds the square roots and divisions). Returns the sum of k_wc (l - L_ref) l0.
+double tension_over_length(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
+                           Eigen::Index begin, Eigen::Index end, double* t_over_l) {
   for (Eigen::Index b = begin; b < end; ++b) {
     const auto& bond = mesh.bonds[static_cast<std::size_t>(b)];
     t_over_l[b] = (w.x.col(bond[1]) - w.x.col(bond[0])).squaredNorm();
   }
   const double* rest = mesh.rest_length_m.data();
+  double contraction_times_l0 = 0;
   for (Eigen::Index b = begin; b < end; ++b) {
     const double l = std::sqrt(t_over_l[b]);
     const double l_ref = wall::contraction_rest_length(rest[b], law.contraction_ratio, law.dryness, ramp);
-    const double tension = wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l) +
-                           wall::contraction_tension(law.contraction_N_m, l, l_ref);
-    t_over_l[b] = tension / l;
+    const double contraction = wall::contraction_tension(law.contraction_N_m, l, l_ref);
+    t_over_l[b] = (wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l) + contraction) / l;
+    contraction_times_l0 += contraction * rest[b];
   }
+  return contraction_times_l0;
 }
 
-// Pass 3: the forces of the span's bonds on the ends it owns; returns the tension x length of the
-// bonds whose first end it owns (each bond counted once).
+// Pass 3: the forces of the span's bonds on the ends it owns; returns the sums over the bonds whose
+// first end it owns (each bond counted once).
 template <class All>
-double apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
-                   const OwnedSpan& span, Eigen::Matrix3Xd& force) {
-  double tension_times_length = 0;
+BondSums apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
+                     const OwnedSpan& span, Eigen::Matrix3Xd& force) {
+  BondSums sums;
   for (Eigen::Index b = span.item_begin; b < span.item_end; ++b) {
     const int k = mesh.bonds[static_cast<std::size_t>(b)][0], j = mesh.bonds[static_cast<std::size_t>(b)][1];
     const bool owns_k = All::value || span.owns(k), owns_j = All::value || span.owns(j);
     if (!owns_k && !owns_j) continue;
     const Eigen::Vector3d d = w.x.col(j) - w.x.col(k);
-    if (owns_k) tension_times_length += t_over_l[b] * d.squaredNorm();
+    if (owns_k) {
+      sums.tension_times_length += t_over_l[b] * d.squaredNorm();
+      sums.damping_loss_W += wall::damping_loss_W(damping_N_s_m, w.v.col(k), w.v.col(j));
+    }
     const Eigen::Vector3d f_k = t_over_l[b] * d + wall::damping_force(damping_N_s_m, w.v.col(k), w.v.col(j));
     if (owns_k) force.col(k) += f_k;
     if (owns_j) force.col(j) -= f_k;
   }
-  return tension_times_length;
+  return sums;
 }
 
 }  // namespace
 
-double add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                       Eigen::Matrix3Xd& force, BondScratch& scratch) {
+BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
+                         Eigen::Matrix3Xd& force, BondScratch& scratch) {
   const auto n_bonds = static_cast<Eigen::Index>(mesh.bonds.size());
   scratch.tension_over_length.resize(n_bonds);
   double* t_over_l = scratch.tension_over_length.data();
-  for_blocks(threads, n_bonds, [&](Eigen::Index begin, Eigen::Index end) {
-    tension_over_length(w, mesh, law, ramp, begin, end, t_over_l);
-  });
-  auto& parts = scratch.tension_times_length;  // per thread, added in order
-  parts.assign(static_cast<std::size_t>(threads), 0.0);
+  const double contraction_times_l0 = reduce_blocks<double>(
+      threads, n_bonds,
+      [&](Eigen::Index begin, Eigen::Index end) { return tension_over_length(w, mesh, law, ramp, begin, end, t_over_l); },
+      [](double a, double b) { return a + b; });
+  auto& parts = scratch.sums;  // per thread, added in order
+  parts.assign(static_cast<std::size_t>(threads), BondSums{});
   const auto& spans = scratch.spans.for_threads(threads, static_cast<int>(w.size()), n_bonds, [&](Eigen::Index b) {
     return mesh.bonds[static_cast<std::size_t>(b)];
   });
@@ -68,9 +74,24 @@ double add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondL
     parts[static_cast<std::size_t>(t)] = with_all_or_some(
         span, [&](auto all) { return apply_bonds(all, w, mesh, law.damping_N_s_m, t_over_l, span, force); });
   });
-  double tension_times_length = 0;
-  for (double part : parts) tension_times_length += part;
-  return tension_times_length;
+  BondSums total;
+  total.contraction_times_l0_N_m = contraction_times_l0;
+  for (const BondSums& part : parts) {
+    total.tension_times_length += part.tension_times_length;
+    total.damping_loss_W += part.damping_loss_W;
+  }
+  return total;
+}
+
+BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp) {
+  BondEnergy e;
+  for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
+    const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm(), l0 = mesh.rest_length_m[b];
+    const double l_ref = wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp);
+    e.stiff_J += wall::stiff_energy(law.G_Pa, law.thickness_m, l0, l);
+    e.contraction_J += wall::contraction_energy(law.contraction_N_m, l, l_ref);
+  }
+  return e;
 }
 
 }  // namespace cellsim

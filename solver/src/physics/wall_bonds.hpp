@@ -20,16 +20,30 @@ struct BondLaw {
   double damping_N_s_m;            // gamma, Eq 16
 };
 
+// What one pass over the bonds sums up besides the forces.
+struct BondSums {
+  double tension_times_length = 0;  // sum of tension x length (the wall's mean tension, Young-Laplace)
+  double damping_loss_W = 0;        // the power Eq 16 takes out of the wall (the energy account)
+  // Sum of k_wc (l - L_ref) l0: the drying ramp's power is this x c (1 - X) d(ramp)/dt (L_ref =
+  // l0 [1 - c (1 - X) ramp] shortens, and each spring's energy changes by -k_wc (l - L_ref) dL_ref).
+  double contraction_times_l0_N_m = 0;
+};
+
 // Kept by the caller between steps, so that no step allocates.
 struct BondScratch {
   Eigen::VectorXd tension_over_length;        // per bond
-  std::vector<double> tension_times_length;   // per thread
+  std::vector<BondSums> sums;                 // per thread
   OwnedSpans spans;                           // the bonds of each thread's particles (owned_spans.hpp)
 };
 
 // Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5).
-// Returns sum over bonds of tension x length (for the wall's mean tension, Young-Laplace).
-double add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                       Eigen::Matrix3Xd& force, BondScratch& scratch);
+BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
+                         Eigen::Matrix3Xd& force, BondScratch& scratch);
+
+// The energy stored in the bonds (the energy account): Eq 15's stiff springs and Eq 21's contraction springs.
+struct BondEnergy {
+  double stiff_J = 0, contraction_J = 0;
+};
+BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp);
 
 }  // namespace cellsim

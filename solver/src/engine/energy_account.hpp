@@ -1,0 +1,77 @@
+#pragma once
+// The energy account (docs/model.md, "The energy account"). At every record: the energy stored in the
+// particles (kinetic; the fluid's internal energy of Eq 7; the wall's stiff, contraction and bending
+// energies; the LJ coupling's potential; the plates' springs), and the running integrals of what the
+// non-conservative terms put in or took out (EnergyFlows, state.hpp): plate work, viscous and damping
+// losses, the water Eq 11 carries across the wall, the wall-pressure closure's mass scaling and the
+// drying ramp. What none of them explains is the residual: the error of the discretisation (the time
+// step, the cut-off r_c = 2h that moves with h, a wall particle entering a plate's footprint inside its
+// range) and any term that creates or destroys energy, such as a coupling that is not conservative.
+#include "core/state.hpp"
+#include "geometry/neighbours.hpp"
+#include "geometry/wall_mesh.hpp"
+#include "physics/bending.hpp"
+#include "physics/eos.hpp"
+#include "physics/lennard_jones.hpp"
+#include "physics/plates.hpp"
+#include "physics/wall_bonds.hpp"
+
+namespace cellsim {
+
+struct StoredEnergy {
+  double kinetic_J = 0;           // fluid and wall, sum of m v^2 / 2
+  double internal_J = 0;          // sum of m e(rho) over the fluid (eos.hpp)
+  double wall_stiff_J = 0;        // Eq 15's springs
+  double wall_contraction_J = 0;  // Eq 21's springs
+  double wall_bending_J = 0;      // Eq 20
+  double coupling_J = 0;          // the LJ potential of Eqs 12-13, 17-19 (0 for the pressure coupling)
+  double plate_J = 0;             // Eq 22's springs
+  double total_J() const {
+    return kinetic_J + internal_J + wall_stiff_J + wall_contraction_J + wall_bending_J + coupling_J + plate_J;
+  }
+};
+
+// What the stored energy depends on besides the state. lj: null for the pressure coupling, which
+// stores nothing of its own (it carries the fluid's pressure, whose energy is the internal energy).
+struct EnergyModel {
+  const WallMesh& mesh;
+  const BondLaw& bonds;
+  double ramp;  // of L_ref (drying.hpp)
+  const Bending& bending;
+  const LennardJones* lj;
+  const PairList& fluid_wall;
+  const PlateLaw& plates;
+  EquationOfState eos;
+};
+
+StoredEnergy stored_energy(const State& s, const EnergyModel& model);
+
+// The powers of the non-conservative terms at one force evaluation; each half kick integrates them over
+// its half step (so a step takes their trapezoidal mean).
+struct EnergyRates {
+  double plate_W = 0;          // F_top x plate speed: the top plate's work on the wall
+  double viscous_loss_W = 0;   // fluid_pairs.hpp
+  double damping_loss_W = 0;   // wall_bonds.hpp
+  double mass_transfer_W = 0;  // sum of dm/dt x carried energy (mass_transfer.hpp)
+  double drive_W = 0;          // dP_T/dt sum m de/dP_T - sum k_wc (l - L_ref) dL_ref/dt, during the drying ramp
+};
+void add_half_kick(const EnergyRates& rates, double half_dt, EnergyFlows& flows);
+
+// Sum over the fluid of dm/dt (v^2/2 + e + P/rho): the energy Eq 11's water brings in (threads: as the step's).
+double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
+                             int threads);
+
+// The energy a mass scaling of particles [begin, end) by factor (density kept) adds: (factor - 1) sum m (v^2/2 + e).
+double mass_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
+                             Eigen::Index end);
+
+// d/dt of the stored energy at fixed particles while the drying ramps P_T and L_ref (drying.hpp):
+// dP_T/dt sum m (1/rho0 - 1/rho) + c (1 - X) d(ramp)/dt sum k_wc (l - L_ref) l0.
+double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double turgor_rate_Pa_s,
+                     double contraction_times_l0_N_m, double L_ref_shortening_rate_1_s);
+
+// Stored energy now - at t = 0 - what the flows put in: zero for an exact integration of the model.
+double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows);
+double net_energy_input_J(const EnergyFlows& flows);
+
+}  // namespace cellsim
