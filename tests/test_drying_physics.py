@@ -1,7 +1,8 @@
 """The start and the drying stage at the paper's full resolution (docs/model-closures.md, "The start
 at rest" and "When drying ends"). Ten default runs: each starts calm, ends drying at steady state on
-its target turgor, sizes order with dryness, and every cell satisfies the Young-Laplace balance.
-Slow: ~2 minutes on 2 cores."""
+its target turgor, sizes order with dryness, and every cell satisfies the Young-Laplace balance; and
+two fresh cells with the pressure coupling, at 200 kPa and at 2 MPa, an analytic anchor of the
+verification ladder (Young-Laplace within 2 %). Slow: ~2 minutes on 2 cores."""
 import h5py
 import numpy as np
 import pytest
@@ -14,6 +15,9 @@ pytestmark = pytest.mark.slow
 DRYNESS_AT_200 = [1.0, 0.9, 0.7, 0.5, 0.3, 0.1]
 CASES = {f"X{x}_P200": {"drying.dryness": x, "cell.turgor_kPa": 200} for x in DRYNESS_AT_200}
 CASES.update({f"X{x}_P{p}": {"drying.dryness": x, "cell.turgor_kPa": p} for x in (1.0, 0.1) for p in (100, 300)})
+# The LJ layer cannot hold 2 MPa (its settle pushes a particle out); the pressure coupling carries any turgor.
+ANCHOR_TURGOR_KPA = (200, 2000)
+CASES.update({f"pressure_X1.0_P{p}": {"coupling.model": "pressure", "cell.turgor_kPa": p} for p in ANCHOR_TURGOR_KPA})
 FRESH = [name for name in sorted(CASES) if name.startswith("X1.0")]
 
 
@@ -78,3 +82,15 @@ def test_every_dried_cell_satisfies_young_laplace(dried, x):
     assert ts["mean_pressure_Pa"][end] == pytest.approx(laplace_Pa, rel=0.05)
     # Independent of the closure's own target: the wall tension balances the LJ push it carries.
     assert ts["wall_pressure_Pa"][end] == pytest.approx(laplace_Pa, rel=0.05)
+
+
+@pytest.mark.parametrize("turgor_kPa", ANCHOR_TURGOR_KPA)
+def test_young_laplace_holds_to_two_percent_with_the_pressure_coupling(dried, turgor_kPa):
+    """Measured 2026-11-25 at 2 MPa: P_mean / (2T/R) = 0.999, the wall carrying 2000.0 kPa."""
+    ts = dried[f"pressure_X1.0_P{turgor_kPa}"]
+    end = end_of_drying(ts)
+    radius = (3 * ts["volume_m3"][end] / (4 * np.pi)) ** (1 / 3)
+    laplace_Pa = 2 * ts["wall_tension_N_m"][end] / radius
+    assert ts["mean_pressure_Pa"][end] == pytest.approx(turgor_kPa * 1e3, rel=0.005)
+    assert ts["mean_pressure_Pa"][end] == pytest.approx(laplace_Pa, rel=0.02)
+    assert ts["wall_pressure_Pa"][end] == pytest.approx(laplace_Pa, rel=0.02)

@@ -98,6 +98,20 @@ TEST(Output, OverridesAreValidatedAndRecorded) {
   EXPECT_EQ(resolved.at("wall").at("G_MPa"), 0.18);
 }
 
+// A choice takes its name as typed or as a JSON string (a script that writes every value as JSON).
+TEST(Output, AChoiceOverrideTakesItsNameBareOrQuoted) {
+  for (const std::string value : {"pressure", "\"pressure\""}) {
+    ScratchDir dir("choice");
+    const auto c = dir.write("case.json", kZeroStepCase);
+    ASSERT_EQ(run_cli({"run", c, "-o", dir.file("out.h5"), "--set", "coupling.model=" + value}, dir).exit_code, 0)
+        << value;
+    h5::Handle f = h5::open_file_readonly(dir.file("out.h5"));
+    const auto resolved = nlohmann::json::parse(h5::get_attr_string(f.id(), "case_json"));
+    EXPECT_EQ(resolved.at("coupling").at("model"), "pressure") << value;
+    EXPECT_EQ(resolved.at("drying").at("steady_rms_speed_m_s"), 0.05) << value;  // derived from the coupling
+  }
+}
+
 TEST(Output, TwoThreadsTwiceGiveIdenticalFilesThatAgreeWithOneThreadToRoundOff) {
   if (!cellsim::built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
   ScratchDir dir("threads");

@@ -153,8 +153,9 @@ void apply_override(json& doc, const std::string& assignment) {
   const std::string section = key.substr(0, key.find('.'));
   if (!doc.is_object()) doc = json::object();
   if (!doc.contains(section) || !doc[section].is_object()) doc[section] = json::object();
-  if (is_choice(*find_param(key))) {  // a name, as typed: --set coupling.model=pressure
-    doc[section][key.substr(key.find('.') + 1)] = text;
+  if (is_choice(*find_param(key))) {  // a name, as typed (--set coupling.model=pressure) or as JSON ("pressure")
+    const bool quoted = text.size() >= 2 && text.front() == '"' && text.back() == '"';
+    doc[section][key.substr(key.find('.') + 1)] = quoted ? text.substr(1, text.size() - 2) : text;
     return;
   }
   std::string lower = text;
