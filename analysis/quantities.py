@@ -53,6 +53,7 @@ QUANTITIES = {
     "mass_transfer_energy_J": ("energy carried by mass transfer [nJ]", 1e9),
     "closure_energy_J": ("energy of the wall-pressure closure [nJ]", 1e9),
     "drive_energy_J": ("energy put in by the drying ramp [nJ]", 1e9),
+    "density_diffusion_energy_J": ("energy put in by the density diffusion [nJ]", 1e9),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
 }
 

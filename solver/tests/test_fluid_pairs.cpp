@@ -47,7 +47,7 @@ struct PlainSums {
 };
 
 PlainSums plain_pair_sums(const FluidParticles& f, const CubicSplineKernel& kernel, const EquationOfState& eos,
-                          double viscosity) {
+                          double viscosity, double diffusion = 0) {
   const Eigen::Index n = f.size();
   PlainSums s{Eigen::Matrix3Xd::Zero(3, n), Eigen::VectorXd::Zero(n)};
   for (Eigen::Index i = 0; i < n; ++i)
@@ -64,6 +64,10 @@ PlainSums plain_pair_sums(const FluidParticles& f, const CubicSplineKernel& kern
       s.force.col(j) -= fij;
       s.drho[i] += f.m[j] * g * vij.dot(xij);
       s.drho[j] += f.m[i] * g * vij.dot(xij);
+      // delta-SPH: psi_ij . grad_i W = 2 (rho_i - rho_j) x_ij . (g x_ij) / r^2, times V_j (and the mirror for j)
+      const double psi_dot_grad = 2 * (f.rho[i] - f.rho[j]) * g * xij.squaredNorm() / xij.squaredNorm();
+      s.drho[i] += diffusion * f.m[j] / f.rho[j] * psi_dot_grad;
+      s.drho[j] -= diffusion * f.m[i] / f.rho[i] * psi_dot_grad;
     }
   return s;
 }
@@ -95,6 +99,25 @@ TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
   ASSERT_GT(plain.pairs_in_support, 2000);
   ASSERT_GT(lists.fluid_fluid().pairs, static_cast<std::size_t>(plain.pairs_in_support));  // the skin lists more
   expect_plain_sums(f, eos, rates, plain);
+}
+
+// delta-SPH's density diffusion in the lanes against the plain sum, and it moves density between particles
+// without creating any: sum of V_i d(rho_i)/dt is unchanged by it.
+TEST(FluidPairs, DensityDiffusionAgreesWithAPlainSumAndCreatesNoDensity) {
+  const double dx = 7.7e-6, viscosity = 0.1, diffusion = 0.1 * 1.3 * dx * 374.0;  // delta h c0
+  const FluidParticles f = random_fluid(7, dx, 5);
+  const CubicSplineKernel kernel(1.3 * dx);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  NeighbourLists lists(0.2 * dx);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  FluidRates with, without;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, with, diffusion);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, without);
+  expect_plain_sums(f, eos, with, plain_pair_sums(f, kernel, eos, viscosity, diffusion));
+  const Eigen::VectorXd volume = f.m.cwiseQuotient(f.rho), added = with.drho_dt - without.drho_dt;
+  ASSERT_GT(added.cwiseAbs().maxCoeff(), 1e-3 * without.drho_dt.cwiseAbs().maxCoeff());  // it does something
+  EXPECT_LT(std::abs(volume.dot(added)), 1e-10 * volume.cwiseProduct(added).cwiseAbs().sum());
+  EXPECT_EQ((with.force - without.force).cwiseAbs().maxCoeff(), 0.0);  // forces untouched
 }
 
 // Rows go 256 at a time, each chunk writing the records its pairs reach just before it; a thread's

@@ -40,6 +40,7 @@ struct Params {
   double viscosity_Pa_s = 0;            // mu, Eq 4
   double bulk_modulus_Pa = 0;           // K, Eq 7
   double eos_exponent = 0;              // 7 in Eq 7
+  double density_diffusion = 0;         // delta of delta-SPH (ours; 0: off, as in the paper)
   std::optional<double> h0_m;           // initial smoothing length, Eq 6 (auto: h_over_dx * dx)
   std::optional<double> h_over_dx;      // smoothing ratio h0 / dx (auto: 6.8 um / dx_ref, the paper's 0.888)
 

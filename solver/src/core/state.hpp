@@ -49,6 +49,7 @@ struct EnergyFlows {
   double mass_transfer_J = 0;  // carried across the wall by Eq 11's water (negative when water leaves)
   double closure_J = 0;        // changed by the wall-pressure closure's mass scaling (drying only)
   double drive_J = 0;          // put in by the drying ramp of P_T and L_ref (explicit time dependence)
+  double density_diffusion_J = 0;  // put into the internal energy by delta-SPH (fluid.density_diffusion)
 };
 
 struct State {

@@ -34,6 +34,7 @@ void add_half_kick(const EnergyRates& rates, double half_dt, EnergyFlows& flows)
   flows.damping_loss_J += half_dt * rates.damping_loss_W;
   flows.mass_transfer_J += half_dt * rates.mass_transfer_W;
   flows.drive_J += half_dt * rates.drive_W;
+  flows.density_diffusion_J += half_dt * rates.density_diffusion_W;
 }
 
 double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
@@ -67,7 +68,7 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 
 double net_energy_input_J(const EnergyFlows& flows) {
   return flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J + flows.closure_J +
-         flows.drive_J;
+         flows.drive_J + flows.density_diffusion_J;
 }
 
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {

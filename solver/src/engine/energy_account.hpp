@@ -54,6 +54,7 @@ struct EnergyRates {
   double damping_loss_W = 0;   // wall_bonds.hpp
   double mass_transfer_W = 0;  // sum of dm/dt x carried energy (mass_transfer.hpp)
   double drive_W = 0;          // dP_T/dt sum m de/dP_T - sum k_wc (l - L_ref) dL_ref/dt, during the drying ramp
+  double density_diffusion_W = 0;  // fluid_pairs.hpp
 };
 void add_half_kick(const EnergyRates& rates, double half_dt, EnergyFlows& flows);
 

@@ -115,9 +115,12 @@ const std::vector<Quantity>& quantities() {
        &Record::closure_energy_J},
       {"drive_energy_J", "J", "energy the drying ramp of P_T and L_ref added at fixed particles since t = 0",
        &Record::drive_energy_J},
+      {"density_diffusion_energy_J", "J",
+       "internal energy the delta-SPH density diffusion (fluid.density_diffusion) added since t = 0",
+       &Record::density_diffusion_energy_J},
       {"energy_residual_J", "J",
-       "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive): the error "
-       "of the energy account",
+       "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
+       "diffusion): the error of the energy account",
        &Record::energy_residual_J},
   };
   return q;
@@ -148,6 +151,7 @@ void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Re
   r.mass_transfer_energy_J = flows.mass_transfer_J;
   r.closure_energy_J = flows.closure_J;
   r.drive_energy_J = flows.drive_J;
+  r.density_diffusion_energy_J = flows.density_diffusion_J;
   r.energy_residual_J = energy_residual_J(stored, flows);
 }
 

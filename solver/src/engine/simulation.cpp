@@ -296,8 +296,11 @@ void Simulation::fluid_terms() {
   neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_, moved_since_lists_m_);
   moved_since_lists_m_ = 0;
   timer_.lap(Phase::Neighbours);
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, eos(), p_.viscosity_Pa_s, threads_, fluid_);
+  const EquationOfState state_eos = eos();
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, fluid_,
+                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s());
   energy_rates_.viscous_loss_W = fluid_.viscous_loss_W;
+  energy_rates_.density_diffusion_W = fluid_.density_diffusion_W;
   timer_.lap(Phase::FluidPairs);
 }
 

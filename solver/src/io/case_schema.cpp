@@ -97,6 +97,9 @@ std::vector<ParamSpec> build_specs() {
            "fluid compression modulus K", "Eq 7"),
       real("fluid.eos_exponent", "1", 1.0, &P::eos_exponent, 7, 1, true, 15, true,
            "exponent of the Tait equation of state", "Eq 7"),
+      real("fluid.density_diffusion", "1", 1.0, &P::density_diffusion, 0, 0, true, 1, true,
+           "delta of the delta-SPH density diffusion, d(rho_i)/dt += delta h c0 sum_j V_j psi_ij . grad W (ours, not "
+           "the paper's; 0: off; 0.1 is the usual value, Antuono et al. 2010)", "sph_terms.hpp, docs/model.md §2"),
       derived("fluid.h0_um", "um", kMicro, &P::h0_m, 0, false, 1000, true,
               "initial SPH smoothing length h0 (set this or fluid.h_over_dx, not both)", "Eq 5, Eq 6",
               "fluid.h_over_dx x dx (dx: the fluid lattice spacing)"),

@@ -18,7 +18,7 @@ using simd::double4;
 constexpr double kFarAway_m = 1e30;
 
 // One record of 12 doubles per particle (columns 0..n-1, and column n for the padding index),
-// three fields of four: position (x, 0), velocity (v, 0), factors (m, P/rho^2, m/rho, 0). The
+// three fields of four: position (x, 0), velocity (v, 0), factors (m, P/rho^2, m/rho, rho). The
 // sums the pairs add up, (force, drho/dt), are records of four in a separate array per thread.
 enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kRecord = 12, kSum = 4 };
 
@@ -28,7 +28,7 @@ void fill_records(const FluidParticles& f, const EquationOfState& eos, Eigen::In
   for (Eigen::Index i = begin; i < end; ++i) {
     out.pressure[i] = eos.pressure(f.rho[i]);
     const double P_over_rho2 = out.pressure[i] / (f.rho[i] * f.rho[i]), volume = f.m[i] / f.rho[i];
-    out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, 0.0;
+    out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, f.rho[i];
   }
 }
 
@@ -54,8 +54,10 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
 // power their viscous forces dissipate added to viscous_loss (F_visc,ij . v_ij = viscous |v_ij|^2 <= 0
 // is what the pair adds to the kinetic energy). The differences x_ij, v_ij are taken on the records,
 // before the transpose: fewer registers stay live.
+template <bool kDiffusion>  // with the delta-SPH density diffusion (a separate loop: without it, nothing changes)
 void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
-                    const double* records, int begin, int end, double* sums, double& viscous_loss) {
+                    double diffusion_m2_s, const double* records, int begin, int end, double* sums,
+                    double& viscous_loss, double& diffusion_power) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
@@ -67,7 +69,9 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
     const double4 x_i = simd::load(position + kRecord * i), v_i = simd::load(velocity + kRecord * i);
     const double4 mi = simd::broadcast(factors[kRecord * i]), Ai = simd::broadcast(factors[kRecord * i + 1]),
                   Vi = simd::broadcast(factors[kRecord * i + 2]);
-    double4 sum_i = {}, drho_i = {}, loss_i = {};
+    [[maybe_unused]] const double4 rho_i = simd::broadcast(factors[kRecord * i + 3]),
+                                   diffusion = simd::broadcast(diffusion_m2_s);
+    double4 sum_i = {}, drho_i = {}, loss_i = {}, diffusion_power_i = {};
     assert((offset[i + 1] - offset[i]) % kPairLanes == 0);
     for (int q = offset[i]; q < offset[i + 1]; q += kPairLanes) {
       const int* j = index + q;
@@ -83,6 +87,16 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
       const double4 v_dot_grad =
           g * (vij.field[0] * xij.field[0] + vij.field[1] * xij.field[1] + vij.field[2] * xij.field[2]);
       drho_i += sph::continuity_rate(v_dot_grad, mj);
+      double4 minus_drho_j = -sph::continuity_rate(v_dot_grad, mi);  // on_j's last lane, taken from j's sums
+      if constexpr (kDiffusion) {
+        const double4 rho_j = factors_j.field[3];
+        const double4 to_i = sph::density_diffusion_rate(diffusion, g, rho_i, rho_j, Vj),
+                      to_j = sph::density_diffusion_rate(diffusion, g, rho_j, rho_i, Vi);
+        drho_i += to_i;
+        minus_drho_j -= to_j;
+        // the internal energy it moves: m P / rho^2 d(rho) for both (the energy account)
+        diffusion_power_i += mi * Ai * to_i + mj * factors_j.field[1] * to_j;
+      }
       const double4 pressure = g * sph::pressure_coefficient(mi, mj, Ai, Aj);
       const double4 viscous = g * sph::viscous_coefficient(mu_sum, Vi, Vj);
       loss_i -= viscous * (vij.field[0] * vij.field[0] + vij.field[1] * vij.field[1] + vij.field[2] * vij.field[2]);
@@ -90,7 +104,7 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
       // F_ji = -F_ij and adds drho_j; added to i's, its first three entries give F_ij.
       const Lanes on_j(pressure * xij.field[0] + viscous * vij.field[0],
                        pressure * xij.field[1] + viscous * vij.field[1],
-                       pressure * xij.field[2] + viscous * vij.field[2], -sph::continuity_rate(v_dot_grad, mi));
+                       pressure * xij.field[2] + viscous * vij.field[2], minus_drho_j);
       for (int l = 0; l < kPairLanes; ++l) {
         double* sum_j = sums + kSum * j[l];
         simd::store(sum_j, simd::load(sum_j) - on_j.field[l]);
@@ -100,6 +114,7 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
     sum_i[3] = simd::sum(drho_i);
     simd::store(sums + kSum * i, simd::load(sums + kSum * i) + sum_i);
     viscous_loss += simd::sum(loss_i);
+    if constexpr (kDiffusion) diffusion_power += simd::sum(diffusion_power_i);
   }
 }
 
@@ -145,8 +160,8 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
-               double viscosity_Pa_s, int r0, int r1, int written, FluidRates& out, Eigen::Matrix4Xd& sums,
-               double& viscous_loss) {
+               double viscosity_Pa_s, double diffusion_m2_s, int r0, int r1, int written, FluidRates& out,
+               Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
   for (int c0 = r0; c0 < r1; c0 += kChunkRows) {
@@ -161,7 +176,12 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
       sums.middleCols(zeroed, reach - zeroed).setZero();
       zeroed = reach;
     }
-    add_pair_terms(pairs, kernel, viscosity_Pa_s, out.records.data(), c0, c1, sums.data(), viscous_loss);
+    if (diffusion_m2_s == 0)
+      add_pair_terms<false>(pairs, kernel, viscosity_Pa_s, 0.0, out.records.data(), c0, c1, sums.data(), viscous_loss,
+                            diffusion_power);
+    else
+      add_pair_terms<true>(pairs, kernel, viscosity_Pa_s, diffusion_m2_s, out.records.data(), c0, c1, sums.data(),
+                           viscous_loss, diffusion_power);
   }
 }
 
@@ -193,7 +213,8 @@ void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
 // own sums, added up in block order at the end: the result depends on the block count only, even
 // if the runtime runs the blocks on fewer threads than asked.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
-                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out) {
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
+                      double density_diffusion_m2_s) {
   const Eigen::Index n = f.size();
   out.pressure.resize(n);
   out.records.resize(kRecord, n + 1);
@@ -206,6 +227,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.halo_build = pairs.build;
   out.written.resize(static_cast<std::size_t>(threads));
   out.block_viscous_loss_W.assign(static_cast<std::size_t>(threads), 0.0);
+  out.block_diffusion_W.assign(static_cast<std::size_t>(threads), 0.0);
   const auto run_blocks = [&](int first, int stride) {
     if (new_halos) {
       for (int t = first; t < threads; t += stride) {
@@ -233,8 +255,8 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     if (stride > 1) wait_for_all_threads();  // every record another block reads is written
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
-      add_block(f, pairs, kernel, eos, viscosity_Pa_s, out.first_row[b], out.first_row[b + 1], out.written[b], out,
-                out.thread_sums[b], out.block_viscous_loss_W[b]);
+      add_block(f, pairs, kernel, eos, viscosity_Pa_s, density_diffusion_m2_s, out.first_row[b], out.first_row[b + 1],
+                out.written[b], out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
     }
   };
   if (threads == 1)
@@ -244,8 +266,9 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
   out.force.resize(3, n);
   out.drho_dt.resize(n);
   for_blocks(threads, n, [&](Eigen::Index begin, Eigen::Index end) { add_thread_sums(begin, end, out); });
-  out.viscous_loss_W = 0;
+  out.viscous_loss_W = out.density_diffusion_W = 0;
   for (double part : out.block_viscous_loss_W) out.viscous_loss_W += part;
+  for (double part : out.block_diffusion_W) out.density_diffusion_W += part;
 }
 
 }  // namespace cellsim

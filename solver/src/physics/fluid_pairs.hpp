@@ -17,6 +17,7 @@ struct FluidRates {
   Eigen::VectorXd drho_dt;  // continuity part only [kg/m^3/s]
   Eigen::VectorXd pressure; // EOS pressure [Pa]
   double viscous_loss_W = 0; // power Eq 4 takes out of the fluid, sum over pairs of -F_visc,ij . v_ij
+  double density_diffusion_W = 0;  // internal energy the delta-SPH diffusion adds, sum of m P/rho^2 d(rho)/dt
   // Scratch of the pair loop, kept to avoid reallocation: one record per particle, and the sums
   // of each thread (fluid_pairs.cpp says what they hold).
   Eigen::Matrix<double, 12, Eigen::Dynamic> records;
@@ -28,11 +29,13 @@ struct FluidRates {
   std::vector<std::vector<char>> halo_mark;
   long halo_build = -1;
   std::vector<int> written;  // block t wrote records [first_row[t], written[t]) before the barrier
-  std::vector<double> block_viscous_loss_W;  // per block, added in block order
+  std::vector<double> block_viscous_loss_W, block_diffusion_W;  // per block, added in block order
 };
 
 // Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
+// density_diffusion_m2_s: delta h c0 of the delta-SPH density diffusion (sph_terms.hpp), 0 for none.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
-                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out);
+                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
+                      double density_diffusion_m2_s = 0);
 
 }  // namespace cellsim

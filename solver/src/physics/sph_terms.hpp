@@ -21,6 +21,16 @@ T viscous_coefficient(T mu_sum, T Vi, T Vj) {
   return mu_sum * Vi * Vj;
 }
 
+// Density diffusion of delta-SPH (Molteni & Colagrossi 2009; delta = 0.1 in Antuono et al. 2010), our
+// option (fluid.density_diffusion): d(rho_i)/dt += delta h c0 sum_j V_j psi_ij . grad_i W_ij with
+// psi_ij = 2 (rho_i - rho_j) x_ij / r^2, i.e. 2 g (rho_i - rho_j) V_j per pair (g = (1/r) dW/dr <= 0, so
+// a denser particle loses density to its neighbours; j gains what i loses, weighted by V_i). Mass is
+// untouched; the acoustic noise of the density field is damped. This returns the part of d(rho_i)/dt.
+template <class T>
+T density_diffusion_rate(T diffusion_m2_s, T g, T rho_i, T rho_j, T V_other) {
+  return diffusion_m2_s * 2.0 * g * (rho_i - rho_j) * V_other;
+}
+
 // Continuity, Eq 10: the contribution of j to d(rho_i)/dt is m_j v_ij . grad_i W_ij
 // (and that of i to d(rho_j)/dt is m_i v_ij . grad_i W_ij: same dot product).
 template <class T>
