@@ -32,26 +32,35 @@ double tension_over_length(const WallParticles& w, const WallMesh& mesh, const B
   return contraction_times_l0;
 }
 
-// Pass 3: the forces of the span's bonds on the ends it owns; returns the sums over the bonds whose
-// first end it owns (each bond counted once).
+// Pass 3: the forces of the span's bonds on the ends it owns; returns the tension x length of the
+// bonds whose first end it owns (each bond counted once).
 template <class All>
-BondSums apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
-                     const OwnedSpan& span, Eigen::Matrix3Xd& force) {
-  BondSums sums;
+double apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, const double* t_over_l,
+                   const OwnedSpan& span, Eigen::Matrix3Xd& force) {
+  double tension_times_length = 0;
   for (Eigen::Index b = span.item_begin; b < span.item_end; ++b) {
     const int k = mesh.bonds[static_cast<std::size_t>(b)][0], j = mesh.bonds[static_cast<std::size_t>(b)][1];
     const bool owns_k = All::value || span.owns(k), owns_j = All::value || span.owns(j);
     if (!owns_k && !owns_j) continue;
     const Eigen::Vector3d d = w.x.col(j) - w.x.col(k);
-    if (owns_k) {
-      sums.tension_times_length += t_over_l[b] * d.squaredNorm();
-      sums.damping_loss_W += wall::damping_loss_W(damping_N_s_m, w.v.col(k), w.v.col(j));
-    }
+    if (owns_k) tension_times_length += t_over_l[b] * d.squaredNorm();
     const Eigen::Vector3d f_k = t_over_l[b] * d + wall::damping_force(damping_N_s_m, w.v.col(k), w.v.col(j));
     if (owns_k) force.col(k) += f_k;
     if (owns_j) force.col(j) -= f_k;
   }
-  return sums;
+  return tension_times_length;
+}
+
+// The power Eq 16 takes out of bonds [begin, end) (the energy account): a pass of its own, so that the
+// force pass above stays as it was (its sums bit for bit).
+double damping_loss_W(const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, Eigen::Index begin,
+                      Eigen::Index end) {
+  double loss[4] = {0, 0, 0, 0};  // four running sums: one would wait on every addition
+  for (Eigen::Index b = begin; b < end; ++b) {
+    const auto& bond = mesh.bonds[static_cast<std::size_t>(b)];
+    loss[b & 3] += wall::damping_loss_W(damping_N_s_m, w.v.col(bond[0]), w.v.col(bond[1]));
+  }
+  return (loss[0] + loss[1]) + (loss[2] + loss[3]);
 }
 
 }  // namespace
@@ -65,8 +74,8 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
       threads, n_bonds,
       [&](Eigen::Index begin, Eigen::Index end) { return tension_over_length(w, mesh, law, ramp, begin, end, t_over_l); },
       [](double a, double b) { return a + b; });
-  auto& parts = scratch.sums;  // per thread, added in order
-  parts.assign(static_cast<std::size_t>(threads), BondSums{});
+  auto& parts = scratch.tension_times_length;  // per thread, added in order
+  parts.assign(static_cast<std::size_t>(threads), 0.0);
   const auto& spans = scratch.spans.for_threads(threads, static_cast<int>(w.size()), n_bonds, [&](Eigen::Index b) {
     return mesh.bonds[static_cast<std::size_t>(b)];
   });
@@ -76,10 +85,11 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
   });
   BondSums total;
   total.contraction_times_l0_N_m = contraction_times_l0;
-  for (const BondSums& part : parts) {
-    total.tension_times_length += part.tension_times_length;
-    total.damping_loss_W += part.damping_loss_W;
-  }
+  for (double part : parts) total.tension_times_length += part;
+  total.damping_loss_W = reduce_blocks<double>(
+      threads, n_bonds,
+      [&](Eigen::Index begin, Eigen::Index end) { return damping_loss_W(w, mesh, law.damping_N_s_m, begin, end); },
+      [](double a, double b) { return a + b; });
   return total;
 }
 

@@ -32,7 +32,7 @@ struct BondSums {
 // Kept by the caller between steps, so that no step allocates.
 struct BondScratch {
   Eigen::VectorXd tension_over_length;        // per bond
-  std::vector<BondSums> sums;                 // per thread
+  std::vector<double> tension_times_length;   // per thread
   OwnedSpans spans;                           // the bonds of each thread's particles (owned_spans.hpp)
 };
 
