@@ -20,7 +20,7 @@ struct BondLaw {
   double damping_N_s_m;            // gamma, Eq 16
 };
 
-// What one pass over the bonds sums up besides the forces.
+// What add_bond_forces sums up besides the forces.
 struct BondSums {
   double tension_times_length = 0;  // sum of tension x length (the wall's mean tension, Young-Laplace)
   double damping_loss_W = 0;        // the power Eq 16 takes out of the wall (the energy account)
