@@ -73,7 +73,7 @@ def energy_account(drying, compression):
     energy that flowed in drying (the sum of the flows' magnitudes), and over the compression the residual's
     change and the losses as fractions of the plate work. NaN where a run has no such stage or no account."""
     out = {}
-    if "energy_residual_J" not in drying:
+    if drying.empty:
         return out
     dried = drying.iloc[-1]
     flowed = sum(abs(dried[name]) for name in ENERGY_FLOWS)

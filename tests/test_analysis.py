@@ -128,6 +128,21 @@ def test_stress_at_strain_interpolates_on_first_crossing():
     assert np.isnan(aggregate.stress_at_strain(ts, 0.5))
 
 
+def test_energy_verdicts_relate_the_residual_to_what_flowed():
+    flows = {name: [0.0, 0.0] for name in aggregate.ENERGY_FLOWS}
+    drying = pd.DataFrame({**flows, "drive_energy_J": [0.0, 8.0], "viscous_loss_J": [0.0, 2.0],
+                           "energy_residual_J": [0.0, 0.1]})
+    compression = drying.iloc[[-1, -1]].reset_index(drop=True).assign(
+        plate_work_J=[0.0, 5.0], viscous_loss_J=[2.0, 2.5], damping_loss_J=[0.0, 1.0], energy_residual_J=[0.1, 0.2])
+    out = aggregate.energy_account(drying, compression)
+    assert out["drying_energy_residual_over_flow"] == pytest.approx(0.1 / 10.0)  # |drive| + |viscous|
+    assert out["compression_plate_work_nJ"] == pytest.approx(5e9)
+    assert out["compression_energy_residual_over_work"] == pytest.approx(0.1 / 5.0)
+    assert out["compression_viscous_loss_over_work"] == pytest.approx(0.5 / 5.0)
+    assert out["compression_damping_loss_over_work"] == pytest.approx(1.0 / 5.0)
+    assert "compression_plate_work_nJ" not in aggregate.energy_account(drying, compression.iloc[:0])
+
+
 def test_claims_compare_fresh_and_dried(config):
     base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
     rows, series = [], []
