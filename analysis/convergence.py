@@ -138,7 +138,8 @@ def readable(table):
     return frame.dropna(axis=1, how="all")
 
 
-def write_page(path, config, table, figure_files, compared=None, target="convergence"):
+def write_page(path, config, table, figure_files, compared=None, target="convergence", summary=None):
+    """summary: the target's cases, for the energy warning (report.energy_box)."""
     here = pathlib.Path(path).parent
     parts = ["<h1>Convergence: how much of a curve is the particle count</h1>",
              "<p>Each convergence study refines one axis: the resolution (fluid count x1, x2.83, x8 and wall count "
@@ -147,6 +148,8 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "
              "Criteria: a stress change below 10 % between the two finest levels, below 3 % between the two time "
              "steps. The load partition (F / (p A_c) and the fluid's share) is explained in docs/model.md §8.</p>"]
+    if summary is not None:
+        parts.append(report.energy_box(summary))
     parts.append("<h2>Verdicts</h2>" + report.frame_table(verdicts(config, table)))
     for study, rows in table.groupby("study", sort=False):
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")

@@ -115,6 +115,28 @@ def warnings_box(summary):
             f"settle.max_iterations in config.<ul>{items}</ul></div>")
 
 
+ENERGY_TOLERANCE = 0.1  # |energy residual| over the plate work of a compression above which it is flagged
+
+
+def energy_box(summary):
+    """Compressions whose energy account does not close (docs/model.md §8): the residual is more than a tenth
+    of the plate work, so energy was made or lost by the numerics (at the default settings it is about 1 %).
+    A visible box, or nothing."""
+    column = "compression_energy_residual_over_work"
+    if column not in summary.columns:
+        return ""
+    flagged = summary[summary[column].abs() > ENERGY_TOLERANCE]
+    if flagged.empty:
+        return ""
+    items = "".join(f"<li><code>{html.escape(r['case'])}</code>: residual {100 * r[column]:+.0f} % of the plate work"
+                    f"</li>" for _, r in flagged.iterrows())
+    return (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} compressions do not conserve "
+            f"energy</b> (the residual of the energy account is more than {100 * ENERGY_TOLERANCE:.0f} % of the plate "
+            f"work): the numerics made or destroyed that energy, usually because the time step is too large for the "
+            f"case. Their curves are not physics where the residual grows (time series energy_residual_J); try half "
+            f"the time step.<ul>{items}</ul></div>")
+
+
 def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=()):
     """cell_pages: the cases' 3-D pages (analysis/cell_view.py), linked from the run matrix."""
     root = pathlib.Path(root)
@@ -124,6 +146,7 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
     parts.append(f"<p class='meta'>Generated {datetime.date.today().isoformat()} from {len(cases)} cases "
                  f"(output folder <code>{html.escape(config['output_dir'])}</code>).</p>")
     parts.append(warnings_box(summary))
+    parts.append(energy_box(summary))
     parts.append("<h2>The paper's claims and this run</h2>")
     parts.append(claims_table(claim_rows))
     parts.append("<h2>Figures</h2>")

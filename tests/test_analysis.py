@@ -224,6 +224,15 @@ def test_report_warns_of_every_case_whose_drying_hit_its_cap():
     assert warnings_box(summary.assign(warning="")) == ""
 
 
+def test_report_warns_of_every_compression_whose_energy_account_does_not_close():
+    from analysis.report import energy_box
+    summary = pd.DataFrame({"case": ["A", "B", "C"], "compression_energy_residual_over_work": [0.01, 4.79, -0.06]})
+    box = energy_box(summary)
+    assert "1 of 3 compressions" in box and "<code>B</code>" in box and "+479 %" in box
+    assert "<code>A</code>" not in box and "<code>C</code>" not in box
+    assert energy_box(summary.assign(compression_energy_residual_over_work=0.0)) == ""
+
+
 def test_drying_summary_reads_a_result_files_start_and_steady_state(cellsim, tmp_path):
     from analysis.results import drying_summary
     out = tmp_path / "run.h5"

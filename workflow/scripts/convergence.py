@@ -10,4 +10,5 @@ summary = pd.read_csv(sm.input.summary)
 table = convergence.tables(config, summary)
 table.to_csv(sm.output.table, index=False)
 figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config, "convergence")}
-convergence.write_page(sm.output.html, config, table, figures, convergence.comparisons(config, summary))
+convergence.write_page(sm.output.html, config, table, figures, convergence.comparisons(config, summary),
+                       summary=summary)
