@@ -219,9 +219,12 @@ void Simulation::start_energy_account() {
 }
 
 StoredEnergy Simulation::stored_energy_now() const {
-  const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
-  return stored_energy(s_, {mesh_, bond_law_, ramp, bending_, p_.coupling_model == kPressure ? nullptr : &lj_,
-                            neighbours_.fluid_wall(), plate_law_, eos()});
+  return stored_energy(s_, {mesh_, bond_law_, contraction_ramp(), bending_,
+                            p_.coupling_model == kPressure ? nullptr : &lj_, neighbours_.fluid_wall(), plate_law_, eos()});
+}
+
+double Simulation::contraction_ramp() const {
+  return s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
 }
 
 void Simulation::set_threads(int threads) {
@@ -317,16 +320,17 @@ void Simulation::mass_transfer() {
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
-  const double ramp = s_.stage == Stage::Drying ? drying::smoothstep_ramp(s_.time_s, p_.ramp_time_s) : 1.0;
-  const BondSums bonds = add_bond_forces(s_.wall, mesh_, bond_law_, ramp, threads_, wall_force_, bond_scratch_);
+  const BondSums bonds =
+      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, wall_force_, bond_scratch_);
   s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
   energy_rates_.damping_loss_W = bonds.damping_loss_W;
   // The drying ramp moves P_T and L_ref (drying.hpp): the stored energy changes at fixed particles.
   const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
-  energy_rates_.drive_W =
-      ramp_rate == 0 ? 0.0
-                     : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * (1.0 - p_.dryness) * ramp_rate,
-                                     bonds.contraction_times_l0_N_m, p_.contraction_ratio * (1.0 - p_.dryness) * ramp_rate);
+  const double drying_share = (1.0 - p_.dryness) * ramp_rate;  // d/dt of (1 - X) ramp
+  energy_rates_.drive_W = ramp_rate == 0 ? 0.0
+                                         : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * drying_share,
+                                                         bonds.contraction_times_l0_N_m,
+                                                         p_.contraction_ratio * drying_share);
   timer_.lap(Phase::WallBonds);
   bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
   timer_.lap(Phase::Bending);

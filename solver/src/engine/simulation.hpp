@@ -95,6 +95,7 @@ class Simulation {
   void check_time_step() const;
   void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference
   StoredEnergy stored_energy_now() const;
+  double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
   std::string where() const;
 
   int threads_ = 1;
