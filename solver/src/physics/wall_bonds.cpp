@@ -53,8 +53,8 @@ double apply_bonds(All, const WallParticles& w, const WallMesh& mesh, double dam
 
 // The power Eq 16 takes out of bonds [begin, end) (the energy account): a pass of its own, so that the
 // force pass above stays as it was (its sums bit for bit).
-double damping_loss_W(const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, Eigen::Index begin,
-                      Eigen::Index end) {
+double bonds_damping_loss_W(const WallParticles& w, const WallMesh& mesh, double damping_N_s_m, Eigen::Index begin,
+                            Eigen::Index end) {
   double loss[4] = {0, 0, 0, 0};  // four running sums: one would wait on every addition
   for (Eigen::Index b = begin; b < end; ++b) {
     const auto& bond = mesh.bonds[static_cast<std::size_t>(b)];
@@ -88,7 +88,7 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
   for (double part : parts) total.tension_times_length += part;
   total.damping_loss_W = reduce_blocks<double>(
       threads, n_bonds,
-      [&](Eigen::Index begin, Eigen::Index end) { return damping_loss_W(w, mesh, law.damping_N_s_m, begin, end); },
+      [&](Eigen::Index begin, Eigen::Index end) { return bonds_damping_loss_W(w, mesh, law.damping_N_s_m, begin, end); },
       [](double a, double b) { return a + b; });
   return total;
 }
