@@ -71,9 +71,10 @@ ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transf
 def energy_account(drying, compression):
     """The energy account's verdicts (docs/model.md): the residual at the end of drying over all the
     energy that flowed in drying (the sum of the flows' magnitudes), and over the compression the residual's
-    change and the losses as fractions of the plate work. NaN where a run has no such stage or no account."""
+    change and the losses as fractions of the plate work. None for a series without an account (one written
+    before it, or a test's synthetic series); no compression verdicts without a compression."""
     out = {}
-    if drying.empty:
+    if drying.empty or "energy_residual_J" not in drying:
         return out
     dried = drying.iloc[-1]
     flowed = sum(abs(dried[name]) for name in ENERGY_FLOWS)

@@ -141,6 +141,7 @@ def test_energy_verdicts_relate_the_residual_to_what_flowed():
     assert out["compression_viscous_loss_over_work"] == pytest.approx(0.5 / 5.0)
     assert out["compression_damping_loss_over_work"] == pytest.approx(1.0 / 5.0)
     assert "compression_plate_work_nJ" not in aggregate.energy_account(drying, compression.iloc[:0])
+    assert aggregate.energy_account(drying.drop(columns="energy_residual_J"), compression) == {}
 
 
 def test_claims_compare_fresh_and_dried(config):
