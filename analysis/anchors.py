@@ -26,7 +26,8 @@ def breathing_frequency_Hz(radius_m, rho0_kg_m3, sound_speed_m_s, stiffness_Pa_m
     """The lowest root of the equation above, as a frequency (bracketed on a fine grid, then bisected)."""
     def residual(omega):
         k = omega / sound_speed_m_s
-        return rho0_kg_m3 * omega**2 * j0(k * radius_m) + (stiffness_Pa_m - mass_kg_m2 * omega**2) * k * j1(k * radius_m)
+        shell = (stiffness_Pa_m - mass_kg_m2 * omega**2) * k * j1(k * radius_m)
+        return rho0_kg_m3 * omega**2 * j0(k * radius_m) + shell
 
     rigid = 4.4934 * sound_speed_m_s / radius_m  # the rigid shell's root bounds the lowest one from above
     grid = np.linspace(1e-3 * rigid, 1.5 * rigid, 20001)

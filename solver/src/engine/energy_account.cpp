@@ -66,13 +66,10 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
   return turgor_rate_Pa_s * per_turgor + L_ref_shortening_rate_1_s * contraction_times_l0_N_m;
 }
 
-double net_energy_input_J(const EnergyFlows& flows) {
-  return flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J + flows.closure_J +
-         flows.drive_J + flows.density_diffusion_J;
-}
-
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
-  return now.total_J() - flows.initial_J - net_energy_input_J(flows);
+  const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
+                        flows.closure_J + flows.drive_J + flows.density_diffusion_J;
+  return now.total_J() - flows.initial_J - put_in;
 }
 
 }  // namespace cellsim

@@ -73,6 +73,5 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 
 // Stored energy now - at t = 0 - what the flows put in: zero for an exact integration of the model.
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows);
-double net_energy_input_J(const EnergyFlows& flows);
 
 }  // namespace cellsim
