@@ -52,20 +52,22 @@ def with_compression_time(ts):
 
 def load_partition(compression, window=LOAD_WINDOW):
     """How the top plate's load is carried over a strain window (model.md §8), as ratios of sums:
-    plate force / (mean fluid pressure x top contact area), and the fluid's share of what holds the
-    touching wall particles up (fluid push / (fluid push + wall's own forces)). NaN if the window
-    is not reached."""
+    plate force / (mean fluid pressure x top contact area), the fluid's share of what holds the
+    touching wall particles up (fluid push / (fluid push + wall's own forces)), and the part of the
+    plate force the pressure coupling's backstop gives (0 for LJ). NaN if the window is not reached."""
     e = compression["nominal_strain"]
     w = compression[(e >= window[0]) & (e <= window[1])]
     if w.empty or "load_fluid_N" not in w:
-        return np.nan, np.nan
+        return np.nan, np.nan, np.nan
     held = (w["load_fluid_N"] + w["load_wall_N"]).sum()
-    return (w["plate_force_top_N"].sum() / w["pressure_load_N"].sum(),
-            w["load_fluid_N"].sum() / held if held else np.nan)
+    force = w["plate_force_top_N"].sum()
+    return (force / w["pressure_load_N"].sum(),
+            w["load_fluid_N"].sum() / held if held else np.nan,
+            w["load_backstop_N"].sum() / force if "load_backstop_N" in w and force else np.nan)
 
 
 ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transfer_energy_J", "closure_energy_J",
-                "drive_energy_J", "density_diffusion_energy_J")
+                "drive_energy_J", "density_diffusion_energy_J", "backstop_work_J")
 
 
 def energy_account(drying, compression):
@@ -77,7 +79,7 @@ def energy_account(drying, compression):
     if drying.empty or "energy_residual_J" not in drying:
         return out
     dried = drying.iloc[-1]
-    flowed = sum(abs(dried[name]) for name in ENERGY_FLOWS)
+    flowed = sum(abs(dried.get(name, 0.0)) for name in ENERGY_FLOWS)
     out["drying_energy_residual_over_flow"] = dried["energy_residual_J"] / flowed if flowed else np.nan
     if len(compression):
         change = compression.iloc[-1] - dried[compression.columns]  # over the compression
@@ -124,9 +126,10 @@ def summarise(ts):
             out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
             out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
                                                        if "footprint_stress_Pa" in ts else np.nan)
-        force_ratio, fluid_share = load_partition(compression)
+        force_ratio, fluid_share, backstop_share = load_partition(compression)
         out["load_F_over_pA"] = force_ratio
         out["load_fluid_share"] = fluid_share
+        out["load_backstop_share"] = backstop_share
     out.update(energy_account(drying, compression))
     return out
 

@@ -30,6 +30,7 @@ QUANTITIES = {
     "pressure_load_N": ("mean fluid pressure x top contact area [uN]", 1e6),
     "load_fluid_N": ("load carried by the fluid's push [uN]", 1e6),
     "load_wall_N": ("load carried by the wall's own forces [uN]", 1e6),
+    "load_backstop_N": ("load carried by the pressure coupling's backstop [uN]", 1e6),
     "nominal_strain": ("nominal strain (H_c - H)/H_c", 1.0),
     "plate_strain": ("plate strain", 1.0),
     "plate_stress_Pa": ("plate stress [kPa]", 1e-3),
@@ -54,6 +55,7 @@ QUANTITIES = {
     "closure_energy_J": ("energy of the wall-pressure closure [nJ]", 1e9),
     "drive_energy_J": ("energy put in by the drying ramp [nJ]", 1e9),
     "density_diffusion_energy_J": ("energy put in by the density diffusion [nJ]", 1e9),
+    "backstop_work_J": ("work of the pressure coupling's backstop [nJ]", 1e9),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
 }
 

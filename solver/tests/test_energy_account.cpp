@@ -98,13 +98,17 @@ TEST(EnergyAccount, PlateEnergyIsThePotentialOfEquation22) {
 }
 
 // A whole run of the small cell, dried to X/X0 = 0.5 (the ramp drives it) and compressed: the stored
-// energy changes by what flowed in, to a small fraction of each flow; with delta-SPH as well, its flow counted.
-class EnergyAccountRun : public ::testing::TestWithParam<double> {};
-INSTANTIATE_TEST_SUITE_P(DensityDiffusion, EnergyAccountRun, ::testing::Values(0.0, 0.1));
+// energy changes by what flowed in, to a small fraction of each flow; with delta-SPH as well, its flow
+// counted; for both couplings, each with its density update (lennard_jones: kick; pressure: drift).
+class EnergyAccountRun : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+INSTANTIATE_TEST_SUITE_P(CouplingAndDensityDiffusion, EnergyAccountRun,
+                         ::testing::Combine(::testing::Values("lennard_jones", "pressure"), ::testing::Values(0.0, 0.1)));
 
 TEST_P(EnergyAccountRun, ResidualOfADryingAndACompressionIsSmallAgainstWhatFlowed) {
-  Params p = cellsim::testing::small_cell_case(
-      {{"drying", {{"dryness", 0.5}, {"ramp_time_us", 2}}}, {"fluid", {{"density_diffusion", GetParam()}}}});
+  const auto& [coupling, diffusion] = GetParam();
+  Params p = cellsim::testing::small_cell_case({{"drying", {{"dryness", 0.5}, {"ramp_time_us", 2}}},
+                                                {"fluid", {{"density_diffusion", diffusion}}},
+                                                {"coupling", {{"model", coupling}}}});
   const Tissue cell = build_tissue(p);
   Simulation sim(p, cell);
   for (int n = 0; n < 8000; ++n) sim.step();  // 4 us: the ramp and its settling
@@ -121,6 +125,6 @@ TEST_P(EnergyAccountRun, ResidualOfADryingAndACompressionIsSmallAgainstWhatFlowe
   ASSERT_GT(work, 0.0);
   EXPECT_LT(std::abs(pressed.energy_residual_J - dried.energy_residual_J), 0.01 * work)
       << "plate work " << work << " J, residual change " << pressed.energy_residual_J - dried.energy_residual_J;
-  if (GetParam() > 0) EXPECT_NE(pressed.density_diffusion_energy_J, 0.0);
+  if (diffusion > 0) EXPECT_NE(pressed.density_diffusion_energy_J, 0.0);
   else EXPECT_EQ(pressed.density_diffusion_energy_J, 0.0);
 }

@@ -120,6 +120,33 @@ TEST(FluidPairs, DensityDiffusionAgreesWithAPlainSumAndCreatesNoDensity) {
   EXPECT_EQ((with.force - without.force).cwiseAbs().maxCoeff(), 0.0);  // forces untouched
 }
 
+// The density drift's two passes (PairTerms::Continuity, then Forces) give what the one pass gives: the
+// continuity pass the density rates (with delta-SPH) and zero forces, the force pass the forces and the
+// viscous loss and zero density rates.
+TEST(FluidPairs, TheContinuityAndForcePassesSplitTheOnePass) {
+  const double dx = 7.7e-6, viscosity = 0.1, diffusion = 0.1 * 1.3 * dx * 374.0;
+  const FluidParticles f = random_fluid(7, dx, 9);
+  const CubicSplineKernel kernel(1.3 * dx);
+  const EquationOfState eos{2e5, 20e6, 1000, 7};
+  NeighbourLists lists(0.2 * dx);
+  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  FluidRates all, continuity, forces;
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, all, diffusion);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, continuity, diffusion, PairTerms::Continuity);
+  fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, forces, diffusion, PairTerms::Forces);
+  const double rate_scale = all.drho_dt.cwiseAbs().maxCoeff(), force_scale = all.force.cwiseAbs().maxCoeff();
+  ASSERT_GT(rate_scale, 0);
+  ASSERT_GT(force_scale, 0);
+  EXPECT_LT((continuity.drho_dt - all.drho_dt).cwiseAbs().maxCoeff(), 1e-12 * rate_scale);
+  EXPECT_LT((forces.force - all.force).cwiseAbs().maxCoeff(), 1e-12 * force_scale);
+  EXPECT_EQ(continuity.force.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(forces.drho_dt.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_NEAR(forces.viscous_loss_W, all.viscous_loss_W, 1e-12 * std::abs(all.viscous_loss_W));
+  EXPECT_EQ(continuity.viscous_loss_W, 0.0);
+  EXPECT_NEAR(continuity.density_diffusion_W, all.density_diffusion_W, 1e-12 * std::abs(all.density_diffusion_W));
+  EXPECT_EQ(forces.density_diffusion_W, 0.0);
+}
+
 // Rows go 256 at a time, each chunk writing the records its pairs reach just before it; a thread's
 // pairs also reach the next block's first records, written before the barrier. With blocks of many
 // chunks every record must still be written before it is read, and every sum zeroed before it adds.

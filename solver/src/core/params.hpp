@@ -11,6 +11,10 @@ using Choice = int;  // the index of a choice key's name (case_schema.cpp lists 
 // coupling.model (model.md §4): how the wall and the fluid push on each other.
 enum CouplingModel : Choice { kLennardJones = 0, kPressure = 1 };
 
+// time.density_update (docs/model.md §7): when the leapfrog advances the density (and mass) of the
+// fluid. auto: kick for lennard_jones (the paper's study as before), drift for pressure.
+enum DensityUpdate : Choice { kDensityAuto = 0, kDensityKick = 1, kDensityDrift = 2 };
+
 // tissue.packing (model.md §10): where the cells' centres sit.
 enum Packing : Choice { kCubicPacking = 0, kClosePacking = 1 };
 
@@ -58,6 +62,7 @@ struct Params {
   double repulsion_f0_N_m = 0;          // f0 for r < r0
   double attraction_f0_N_m = 0;         // f0 for r0 <= r < r_c
   double attraction_cutoff_over_h = 0;  // r_c / h
+  double backstop_range_over_dx = 0;    // the pressure coupling's backstop range d_b / dx (0: none)
 
   // the start at rest (settle.hpp)
   std::int64_t settle_max_iterations = 0;  // 0: start from the cell as built
@@ -87,6 +92,7 @@ struct Params {
 
   // time integration, model.md §7
   double dt_s = 0;
+  Choice density_update = kDensityAuto;
 
   // output
   std::int64_t record_every = 0;        // steps between time-series records

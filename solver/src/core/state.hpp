@@ -50,6 +50,7 @@ struct EnergyFlows {
   double closure_J = 0;        // changed by the wall-pressure closure's mass scaling (drying only)
   double drive_J = 0;          // put in by the drying ramp of P_T and L_ref (explicit time dependence)
   double density_diffusion_J = 0;  // put into the internal energy by delta-SPH (fluid.density_diffusion)
+  double backstop_work_J = 0;  // done by the pressure coupling's backstop (coupling.backstop_range_over_dx)
 };
 
 struct State {

@@ -28,13 +28,14 @@ StoredEnergy stored_energy(const State& s, const EnergyModel& model) {
   return e;
 }
 
-void add_half_kick(const EnergyRates& rates, double half_dt, EnergyFlows& flows) {
+void add_half_kick(const EnergyRates& rates, double half_dt, bool density_flows, EnergyFlows& flows) {
   flows.plate_work_J += half_dt * rates.plate_W;
   flows.viscous_loss_J += half_dt * rates.viscous_loss_W;
   flows.damping_loss_J += half_dt * rates.damping_loss_W;
-  flows.mass_transfer_J += half_dt * rates.mass_transfer_W;
+  if (density_flows) flows.mass_transfer_J += half_dt * rates.mass_transfer_W;
   flows.drive_J += half_dt * rates.drive_W;
-  flows.density_diffusion_J += half_dt * rates.density_diffusion_W;
+  if (density_flows) flows.density_diffusion_J += half_dt * rates.density_diffusion_W;
+  flows.backstop_work_J += half_dt * rates.backstop_W;
 }
 
 double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
@@ -68,7 +69,7 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
   const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
-                        flows.closure_J + flows.drive_J + flows.density_diffusion_J;
+                        flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J;
   return now.total_J() - flows.initial_J - put_in;
 }
 

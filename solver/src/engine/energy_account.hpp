@@ -55,8 +55,11 @@ struct EnergyRates {
   double mass_transfer_W = 0;  // sum of dm/dt x carried energy (mass_transfer.hpp)
   double drive_W = 0;          // dP_T/dt sum m de/dP_T - sum k_wc (l - L_ref) dL_ref/dt, during the drying ramp
   double density_diffusion_W = 0;  // fluid_pairs.hpp
+  double backstop_W = 0;       // the pressure coupling's backstop on fluid and wall (pressure_coupling.hpp)
 };
-void add_half_kick(const EnergyRates& rates, double half_dt, EnergyFlows& flows);
+// density_flows: also the flows of the density and mass updates (Eq 11's water, delta-SPH), when the
+// kicks advance them (time.density_update = kick); with drift the density's own step counts them.
+void add_half_kick(const EnergyRates& rates, double half_dt, bool density_flows, EnergyFlows& flows);
 
 // Sum over the fluid of dm/dt (v^2/2 + e + P/rho): the energy Eq 11's water brings in (threads: as the step's).
 double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,

@@ -76,6 +76,9 @@ const std::vector<Quantity>& quantities() {
        &Record::load_fluid_N},
       {"load_wall_N", "N", "upward force of the wall itself (bonds, bending, damping) on the wall particles touching the top plate",
        &Record::load_wall_N},
+      {"load_backstop_N", "N",
+       "the part of load_fluid_N the pressure coupling's backstop gives (coupling.backstop_range_over_dx; 0 for LJ)",
+       &Record::load_backstop_N},
       {"nominal_strain", "1", "(H_c - H) / H_c, H_c the cell height when compression starts",
        &Record::nominal_strain},
       {"plate_strain", "1", "top-plate travel since first contact / H_c", &Record::plate_strain},
@@ -118,9 +121,11 @@ const std::vector<Quantity>& quantities() {
       {"density_diffusion_energy_J", "J",
        "internal energy the delta-SPH density diffusion (fluid.density_diffusion) added since t = 0",
        &Record::density_diffusion_energy_J},
+      {"backstop_work_J", "J", "work of the pressure coupling's backstop on fluid and wall since t = 0 (0 for LJ)",
+       &Record::backstop_work_J},
       {"energy_residual_J", "J",
        "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
-       "diffusion): the error of the energy account",
+       "diffusion + backstop work): the error of the energy account",
        &Record::energy_residual_J},
   };
   return q;
@@ -152,6 +157,7 @@ void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Re
   r.closure_energy_J = flows.closure_J;
   r.drive_energy_J = flows.drive_J;
   r.density_diffusion_energy_J = flows.density_diffusion_J;
+  r.backstop_work_J = flows.backstop_work_J;
   r.energy_residual_J = energy_residual_J(stored, flows);
 }
 
@@ -192,7 +198,7 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   if (!pl.active) {
     r.plate_top_z_m = r.plate_bottom_z_m = r.plate_force_top_N = r.plate_force_bottom_N = kNaN;
     r.contact_area_m2 = r.contact_count = r.contact_area_top_m2 = kNaN;
-    r.pressure_load_N = r.load_fluid_N = r.load_wall_N = kNaN;
+    r.pressure_load_N = r.load_fluid_N = r.load_wall_N = r.load_backstop_N = kNaN;
     r.nominal_strain = r.plate_strain = r.plate_stress_Pa = r.section_stress_Pa = r.contact_stress_Pa = kNaN;
     r.footprint_stress_Pa = kNaN;
     return r;
@@ -225,6 +231,7 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   r.pressure_load_N = r.mean_pressure_Pa * contact_area_top;
   r.load_fluid_N = load.fluid_push_N;
   r.load_wall_N = load.wall_push_N;
+  r.load_backstop_N = load.backstop_push_N;
   // The top plate's force over the top plate's own contact (the bottom one carries the same load).
   r.contact_stress_Pa = contact_area_top > 0 ? pl.force_top_N / contact_area_top : kNaN;
   return r;

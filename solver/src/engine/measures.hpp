@@ -24,14 +24,14 @@ struct Record {
   double wall_tension_N_m, wall_pressure_Pa;
   double plate_top_z_m, plate_bottom_z_m, plate_force_top_N, plate_force_bottom_N;
   double contact_area_m2, contact_count, contact_area_top_m2;
-  double pressure_load_N, load_fluid_N, load_wall_N;
+  double pressure_load_N, load_fluid_N, load_wall_N, load_backstop_N;
   double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa, footprint_stress_Pa;
   double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
   // The energy account (energy_account.hpp): stored energies, the flows since t = 0, the residual.
   double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
   double coupling_energy_J, plate_energy_J, stored_energy_J;
   double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
-  double density_diffusion_energy_J;
+  double density_diffusion_energy_J, backstop_work_J;
   double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
   std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;

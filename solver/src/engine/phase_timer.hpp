@@ -7,14 +7,15 @@
 namespace cellsim {
 
 enum class Phase : int {
-  Geometry, Neighbours, FluidPairs, MassTransfer, WallBonds, Bending, CellContact, WallFluid, Plates, Integration,
+  Geometry, Neighbours, DensityDrift, FluidPairs, MassTransfer, WallBonds, Bending, CellContact, WallFluid, Plates, Integration,
   Recording, Count
 };
 inline constexpr const char* kPhaseNames[] = {"geometry (area, volume, h)", "neighbour lists",
+                                              "density in the drift (continuity pass)",
                                               "fluid pairs (continuity, pressure, viscous)", "mass transfer",
                                               "wall bonds (stiff, contraction, damping)", "bending",
                                               "between cells (contact, middle lamella)",
-                                              "wall-fluid (LJ)", "plates", "integration and checks",
+                                              "wall-fluid (coupling)", "plates", "integration and checks",
                                               "recording (measures, containment)"};
 
 class PhaseTimer {

@@ -89,15 +89,27 @@ void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double
   }
 }
 
-// Half a kick of the fluid: velocity by force / mass, density and mass by their rates.
+// Half a kick of the fluid: velocity by force / mass, and (density_too: time.density_update = kick)
+// density and mass by their rates.
 void kick_fluid(double half_dt, const Eigen::Matrix3Xd& force, const Eigen::VectorXd& drho_dt,
-                const Eigen::VectorXd& dm_dt, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& kick_factor,
-                FluidParticles& f) {
+                const Eigen::VectorXd& dm_dt, bool density_too, Eigen::Index begin, Eigen::Index end,
+                Eigen::VectorXd& kick_factor, FluidParticles& f) {
   const Eigen::Index count = end - begin;
   kick_factor.segment(begin, count) = half_dt / f.m.segment(begin, count).array();  // packed divisions
   for (Eigen::Index i = begin; i < end; ++i) f.v.col(i) += kick_factor[i] * force.col(i);
+  if (!density_too) return;
   f.rho.segment(begin, count) += half_dt * drho_dt.segment(begin, count);
   f.m.segment(begin, count) += half_dt * dm_dt.segment(begin, count);
+}
+
+// The drift of density and mass over dt (time.density_update = drift): Eq 10's rate plus Eq 9's share
+// of Eq 11, with the mass by Eq 11.
+void drift_density(double dt, const Eigen::VectorXd& continuity_rate, const Eigen::VectorXd& dm_dt, Eigen::Index begin,
+                   Eigen::Index end, FluidParticles& f) {
+  for (Eigen::Index i = begin; i < end; ++i) {
+    f.rho[i] += dt * density_rate(continuity_rate[i], f.rho[i], f.m[i], dm_dt[i]);
+    f.m[i] += dt * dm_dt[i];
+  }
 }
 
 // y *= factor, for entries [begin, end).
@@ -186,6 +198,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_(plate_law(p)),
       bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
+      drift_density_(p.density_update == kDensityDrift),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = tissue.fluid_x;
   s_.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
@@ -247,7 +260,7 @@ void Simulation::step() {
   kick(0.5 * p_.dt_s);
   drift(p_.dt_s);
   timer_.lap(Phase::Integration);
-  compute_rates();
+  compute_rates(drift_density_ ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) apply_pressure_closure();
   ++s_.step;
@@ -257,9 +270,13 @@ void Simulation::step() {
 }
 
 // Forces and rates at the current positions, in the order of the model.
-void Simulation::compute_rates() {
+void Simulation::compute_rates(double density_step_s) {
   update_geometry();
   timer_.lap(Phase::Geometry);
+  update_neighbours();
+  timer_.lap(Phase::Neighbours);
+  if (density_step_s > 0) advance_density(density_step_s);
+  timer_.lap(Phase::DensityDrift);
   fluid_terms();
   mass_transfer();
   timer_.lap(Phase::MassTransfer);
@@ -269,7 +286,7 @@ void Simulation::compute_rates() {
   });
   wall_terms();
   cell_contact_terms();
-  wall_fluid_terms();
+  wall_fluid_terms(density_step_s > 0);
   timer_.lap(Phase::WallFluid);
   plate_terms();
   timer_.lap(Phase::Plates);
@@ -293,15 +310,40 @@ void Simulation::update_geometry() {
                                                 : std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
 }
 
-// Continuity (Eq 10), pressure (Eq 3) and viscous (Eq 4) terms.
+void Simulation::update_neighbours() {
+  neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, lj_.cutoff_m, threads_, moved_since_lists_m_);
+  moved_since_lists_m_ = 0;
+}
+
+// time.density_update = drift (density_update.hpp): the density and mass advance by dt from the
+// continuity rates at the drifted positions and the half-step velocities (Eq 10 with delta-SPH, the
+// pressure coupling's wall term), and Eq 11's rates of the last force evaluation; the energy these
+// carry (Eq 11's water, the diffusion) is counted over the same dt.
+void Simulation::advance_density(double dt) {
+  const CubicSplineKernel kernel(s_.smoothing_length_m);
+  const EquationOfState state_eos = eos();
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, continuity_,
+                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(), PairTerms::Continuity);
+  if (p_.coupling_model == kPressure) {
+    pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, neighbours_.fluid_wall(), kernel,
+                              pressure_coupling_law(), threads_, pressure_coupling_scratch_);
+    add_pressure_coupling_density_rates(s_.fluid, s_.wall, neighbours_.fluid_wall(), pressure_coupling_scratch_,
+                                        threads_, continuity_.drho_dt);
+  }
+  s_.energy.mass_transfer_J += dt * energy_rates_.mass_transfer_W;
+  s_.energy.density_diffusion_J += dt * continuity_.density_diffusion_W;
+  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
+    drift_density(dt, continuity_.drho_dt, dm_dt_, begin, end, s_.fluid);
+  });
+}
+
+// Pressure (Eq 3) and viscous (Eq 4) terms, and (time.density_update = kick) continuity (Eq 10).
 void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
-  neighbours_.update(s_.fluid.x, s_.wall.x, kernel.support(), lj_.cutoff_m, threads_, moved_since_lists_m_);
-  moved_since_lists_m_ = 0;
-  timer_.lap(Phase::Neighbours);
   const EquationOfState state_eos = eos();
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, fluid_,
-                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s());
+                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(),
+                   drift_density_ ? PairTerms::Forces : PairTerms::All);
   energy_rates_.viscous_loss_W = fluid_.viscous_loss_W;
   energy_rates_.density_diffusion_W = fluid_.density_diffusion_W;
   timer_.lap(Phase::FluidPairs);
@@ -344,13 +386,29 @@ void Simulation::cell_contact_terms() {
   timer_.lap(Phase::CellContact);
 }
 
+// The pressure coupling's backstop range follows h (Eq 6) as the fluid spacing does; its pressure is K.
+PressureCouplingLaw Simulation::pressure_coupling_law() const {
+  return {p_.backstop_range_over_dx * s_.smoothing_length_m / *p_.h_over_dx, p_.bulk_modulus_Pa};
+}
+
 // The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
-void Simulation::wall_fluid_terms() {
+// weights_fresh: advance_density has weighed the pressure coupling's pairs at these positions.
+void Simulation::wall_fluid_terms(bool weights_fresh) {
+  energy_rates_.backstop_W = 0;
   if (p_.coupling_model == kPressure) {
-    pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, surface_.vertex_normal, neighbours_.fluid_wall(),
-                             CubicSplineKernel(s_.smoothing_length_m), threads_, pressure_coupling_scratch_, fluid_.force,
-                             fluid_.drho_dt, coupling_on_wall_);
+    const PairList& pairs = neighbours_.fluid_wall();
+    if (!weights_fresh) {
+      pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, pairs,
+                                CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_law(), threads_,
+                                pressure_coupling_scratch_);
+      if (!drift_density_)
+        add_pressure_coupling_density_rates(s_.fluid, s_.wall, pairs, pressure_coupling_scratch_, threads_,
+                                            fluid_.drho_dt);
+    }
+    energy_rates_.backstop_W =
+        pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, pairs, threads_, pressure_coupling_scratch_,
+                                 fluid_.force, coupling_on_wall_, backstop_on_wall_);
   } else {
     wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, threads_, fluid_.force, coupling_on_wall_,
                       lj_scratch_);
@@ -385,10 +443,10 @@ void Simulation::plate_terms() {
 }
 
 void Simulation::kick(double half_dt) {
-  add_half_kick(energy_rates_, half_dt, s_.energy);
+  add_half_kick(energy_rates_, half_dt, !drift_density_, s_.energy);
   kick_factor_.resize(s_.fluid.size());
   for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, begin, end, kick_factor_, s_.fluid);
+    kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, !drift_density_, begin, end, kick_factor_, s_.fluid);
   });
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
     add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
@@ -575,7 +633,8 @@ void Simulation::restore(const State& saved) {
 }
 
 Record Simulation::record() const {
-  const LoadPartition load = top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, plate_law_, s_.plates);
+  const LoadPartition load =
+      top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, backstop_on_wall_, plate_law_, s_.plates);
   Record r = measure(s_, mesh_, cells_, surface_, p_, eos(), load);
   add_energy_account(stored_energy_now(), s_.energy, r);
   return r;

@@ -80,13 +80,18 @@ class Simulation {
   const WallSurface& surface() const { return surface_; }
 
  private:
-  void compute_rates();
+  // density_step_s > 0: first advance the density and mass by that step from the continuity rates at
+  // these positions and velocities (time.density_update = drift), then the forces at the new density.
+  void compute_rates(double density_step_s = 0);
   void update_geometry();
+  void update_neighbours();
+  void advance_density(double dt);
   void fluid_terms();
   void mass_transfer();
   void wall_terms();
   void cell_contact_terms();
-  void wall_fluid_terms();
+  void wall_fluid_terms(bool weights_fresh);
+  PressureCouplingLaw pressure_coupling_law() const;
   void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
@@ -115,7 +120,9 @@ class Simulation {
 
   // Rates at the current positions.
   FluidRates fluid_;
-  Eigen::Matrix3Xd wall_force_, coupling_on_wall_;
+  FluidRates continuity_;  // the continuity pass of time.density_update = drift (its forces are zeros)
+  bool drift_density_;
+  Eigen::Matrix3Xd wall_force_, coupling_on_wall_, backstop_on_wall_;
   Eigen::VectorXd dm_dt_;
   EnergyRates energy_rates_;  // of the non-conservative terms, at the current positions
   Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "engine/density_update.hpp"
 #include "engine/steady_state.hpp"
 #include "io/case_schema.hpp"
 
@@ -199,7 +200,8 @@ Params validate_case(const json& doc) {
       assign(*spec, value, p);
     }
   }
-  resolve_steady_state_defaults(p);  // a derived key that needs no geometry (the others: build_cell)
+  resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
+  resolve_density_update(p);
   return p;
 }
 

@@ -134,6 +134,10 @@ std::vector<ParamSpec> build_specs() {
            "LJ contact strength for r0 <= r < r_c", "Eqs 13, 19"),
       real("coupling.attraction_cutoff_over_h", "1", 1.0, &P::attraction_cutoff_over_h, 2, 0, true, 2, true,
            "attraction cut-off r_c in units of the smoothing length h", "Eqs 13, 19"),
+      real("coupling.backstop_range_over_dx", "1", 1.0, &P::backstop_range_over_dx, 0.25, 0, true, 1, true,
+           "pressure coupling only: a fluid particle closer than this x dx (the fluid spacing, following h) to a wall "
+           "element's tangent plane is pushed back by K (1 - d/d_b)^2 in place of its pressure (0: no backstop)",
+           "docs/model.md §4"),
       // settle: the start at rest
       integer("settle.max_iterations", &P::settle_max_iterations, 20000, 0, 1e9,
               "pseudo-steps of the relaxation at rest at the fresh turgor before drying starts (0: start "
@@ -186,6 +190,11 @@ std::vector<ParamSpec> build_specs() {
       // time
       real("time.dt_ns", "ns", 1e-9, &P::dt_s, 1, 0, false, 1000, true,
            "time step (checked against the wall-spring limit at the start, the CFL limits every step)", "model.md §7"),
+      choice("time.density_update", &P::density_update, {"auto", "kick", "drift"},
+             "when the leapfrog advances the fluid's density and mass: kick (with the velocity, in both half kicks: "
+             "one pass over the pairs a step), drift (with the positions, from the half-step velocities: two passes, "
+             "stable where kick lets the acoustic modes grow); auto: kick for lennard_jones, drift for pressure",
+             "docs/model.md §7"),
       // output
       integer("output.record_every", &P::record_every, 100, 1, 1e9,
               "steps between time-series records", "model.md §8"),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <type_traits>
 
 #include "parallel/simd4.hpp"
 #include "parallel/threads.hpp"
@@ -54,7 +55,9 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
 // power their viscous forces dissipate added to viscous_loss (F_visc,ij . v_ij = viscous |v_ij|^2 <= 0
 // is what the pair adds to the kinetic energy). The differences x_ij, v_ij are taken on the records,
 // before the transpose: fewer registers stay live.
-template <bool kDiffusion>  // with the delta-SPH density diffusion (a separate loop: without it, nothing changes)
+// kDiffusion: with the delta-SPH density diffusion (a separate loop: without it, nothing changes);
+// kTerms: which terms (PairTerms), each set its own loop.
+template <bool kDiffusion, PairTerms kTerms>
 void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
                     double diffusion_m2_s, const double* records, int begin, int end, double* sums,
                     double& viscous_loss, double& diffusion_power) {
@@ -84,11 +87,15 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
       const double4 mj = factors_j.field[0], Aj = factors_j.field[1], Vj = factors_j.field[2];
       const double4 g = kernel.dW_dr_over_r(
           simd::sqrt(xij.field[0] * xij.field[0] + xij.field[1] * xij.field[1] + xij.field[2] * xij.field[2]));
-      const double4 v_dot_grad =
-          g * (vij.field[0] * xij.field[0] + vij.field[1] * xij.field[1] + vij.field[2] * xij.field[2]);
-      drho_i += sph::continuity_rate(v_dot_grad, mj);
-      double4 minus_drho_j = -sph::continuity_rate(v_dot_grad, mi);  // on_j's last lane, taken from j's sums
-      if constexpr (kDiffusion) {
+      constexpr bool kContinuity = kTerms != PairTerms::Forces, kForces = kTerms != PairTerms::Continuity;
+      double4 minus_drho_j = {};  // on_j's last lane, taken from j's sums
+      if constexpr (kContinuity) {
+        const double4 v_dot_grad =
+            g * (vij.field[0] * xij.field[0] + vij.field[1] * xij.field[1] + vij.field[2] * xij.field[2]);
+        drho_i += sph::continuity_rate(v_dot_grad, mj);
+        minus_drho_j = -sph::continuity_rate(v_dot_grad, mi);
+      }
+      if constexpr (kDiffusion && kContinuity) {
         const double4 rho_j = factors_j.field[3];
         const double4 to_i = sph::density_diffusion_rate(diffusion, g, rho_i, rho_j, Vj),
                       to_j = sph::density_diffusion_rate(diffusion, g, rho_j, rho_i, Vi);
@@ -97,9 +104,12 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
         // the internal energy it moves: m P / rho^2 d(rho) for both (the energy account)
         diffusion_power_i += mi * Ai * to_i + mj * factors_j.field[1] * to_j;
       }
-      const double4 pressure = g * sph::pressure_coefficient(mi, mj, Ai, Aj);
-      const double4 viscous = g * sph::viscous_coefficient(mu_sum, Vi, Vj);
-      loss_i -= viscous * (vij.field[0] * vij.field[0] + vij.field[1] * vij.field[1] + vij.field[2] * vij.field[2]);
+      double4 pressure = {}, viscous = {};
+      if constexpr (kForces) {
+        pressure = g * sph::pressure_coefficient(mi, mj, Ai, Aj);
+        viscous = g * sph::viscous_coefficient(mu_sum, Vi, Vj);
+        loss_i -= viscous * (vij.field[0] * vij.field[0] + vij.field[1] * vij.field[1] + vij.field[2] * vij.field[2]);
+      }
       // Transposed back, lane l is j's record (F_ij, -drho_j): subtracted from j's sums it gives
       // F_ji = -F_ij and adds drho_j; added to i's, its first three entries give F_ij.
       const Lanes on_j(pressure * xij.field[0] + viscous * vij.field[0],
@@ -160,7 +170,7 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
-               double viscosity_Pa_s, double diffusion_m2_s, int r0, int r1, int written, FluidRates& out,
+               double viscosity_Pa_s, double diffusion_m2_s, PairTerms terms, int r0, int r1, int written, FluidRates& out,
                Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
@@ -176,12 +186,23 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
       sums.middleCols(zeroed, reach - zeroed).setZero();
       zeroed = reach;
     }
-    if (diffusion_m2_s == 0)
-      add_pair_terms<false>(pairs, kernel, viscosity_Pa_s, 0.0, out.records.data(), c0, c1, sums.data(), viscous_loss,
-                            diffusion_power);
+    const auto pass = [&](auto diffusion, auto terms) {
+      add_pair_terms<decltype(diffusion)::value, decltype(terms)::value>(
+          pairs, kernel, viscosity_Pa_s, diffusion_m2_s, out.records.data(), c0, c1, sums.data(), viscous_loss,
+          diffusion_power);
+    };
+    using Off = std::false_type;
+    using On = std::true_type;
+    using All = std::integral_constant<PairTerms, PairTerms::All>;
+    using Continuity = std::integral_constant<PairTerms, PairTerms::Continuity>;
+    using Forces = std::integral_constant<PairTerms, PairTerms::Forces>;
+    const bool diffusion = diffusion_m2_s != 0;
+    if (terms == PairTerms::Forces)
+      pass(Off{}, Forces{});
+    else if (terms == PairTerms::Continuity)
+      diffusion ? pass(On{}, Continuity{}) : pass(Off{}, Continuity{});
     else
-      add_pair_terms<true>(pairs, kernel, viscosity_Pa_s, diffusion_m2_s, out.records.data(), c0, c1, sums.data(),
-                           viscous_loss, diffusion_power);
+      diffusion ? pass(On{}, All{}) : pass(Off{}, All{});
   }
 }
 
@@ -214,7 +235,7 @@ void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
 // if the runtime runs the blocks on fewer threads than asked.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
-                      double density_diffusion_m2_s) {
+                      double density_diffusion_m2_s, PairTerms terms) {
   const Eigen::Index n = f.size();
   out.pressure.resize(n);
   out.records.resize(kRecord, n + 1);
@@ -255,7 +276,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     if (stride > 1) wait_for_all_threads();  // every record another block reads is written
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
-      add_block(f, pairs, kernel, eos, viscosity_Pa_s, density_diffusion_m2_s, out.first_row[b], out.first_row[b + 1],
+      add_block(f, pairs, kernel, eos, viscosity_Pa_s, density_diffusion_m2_s, terms, out.first_row[b], out.first_row[b + 1],
                 out.written[b], out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
     }
   };

@@ -32,10 +32,15 @@ struct FluidRates {
   std::vector<double> block_viscous_loss_W, block_diffusion_W;  // per block, added in block order
 };
 
-// Overwrites out (sized to the fluid). threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
+// Which terms a pass over the pairs computes: all of them (the density kicked with the velocity, one
+// pass a step), or, with the density advanced in the drift (time.density_update = drift), the
+// continuity terms in one pass (Eq 10, and delta-SPH) and the forces in another (Eqs 3, 4).
+enum class PairTerms { All, Continuity, Forces };
+
+// Overwrites out (sized to the fluid); the terms a pass leaves out come out as zeros. threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
 // density_diffusion_m2_s: delta h c0 of the delta-SPH density diffusion (sph_terms.hpp), 0 for none.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
-                      double density_diffusion_m2_s = 0);
+                      double density_diffusion_m2_s = 0, PairTerms terms = PairTerms::All);
 
 }  // namespace cellsim

@@ -1,74 +1,126 @@
 #include "physics/pressure_coupling.hpp"
 
+#include "parallel/threads.hpp"
+
 namespace cellsim {
 namespace {
 
-// Pass 1 over fluid rows [begin, end): W of every pair, and the Shepard sums of P_k (row 0: the
-// weight sum V_i W, row 1: V_i W P_i).
-void add_shepard_sums(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
-                      const PairList& pairs, const CubicSplineKernel& kernel, Eigen::Index begin, Eigen::Index end,
-                      double* W, Eigen::Matrix2Xd& shepard) {
+// Weights of the pairs of fluid rows [begin, end); returns true if any has a backstop.
+bool weigh_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const Eigen::Matrix3Xd& vertex_normal,
+                const PairList& pairs, const CubicSplineKernel& kernel, const PressureCouplingLaw& law, double fade,
+                Eigen::Index begin, Eigen::Index end, double* weight, double* backstop) {
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
+  bool any = false;
   for (Eigen::Index i = begin; i < end; ++i) {
-    const Eigen::Vector3d xi = fluid.x.col(i);
-    const double volume_i = fluid.m[i] / fluid.rho[i];
+    const Eigen::Vector3d xi = fluid_x.col(i);
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
-      W[q] = kernel.W((xi - wall.x.col(k)).norm());
-      shepard(0, k) += volume_i * W[q];
-      shepard(1, k) += volume_i * W[q] * pressure[i];
+      const Eigen::Vector3d to_wall = wall_x.col(k) - xi;
+      const double W = kernel.W(to_wall.norm());
+      const double depth = W > 0 ? to_wall.dot(vertex_normal.col(k)) / vertex_normal.col(k).norm() : 0.0;
+      weight[q] = one_sided_weight(depth, fade) * W;
+      backstop[q] = backstop_pressure_Pa(depth, law) * W;
+      any = any || backstop[q] != 0;
     }
   }
+  return any;
 }
 
-// Pass 2 over fluid rows [begin, end): the pair forces, and the wall term of the continuity
-// equation, rho_i sum_k W_ik (v_i - v_k) . S_k.
-void add_pair_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
-                     const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs, const double* W,
-                     const Eigen::Matrix2Xd& shepard, Eigen::Index begin, Eigen::Index end,
-                     Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall) {
+// The wall term of Eq 10 for fluid rows [begin, end).
+void add_density_rows(const FluidParticles& fluid, const WallParticles& wall, const PairList& pairs,
+                      const PressureCouplingScratch& s, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& drho_dt) {
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
   for (Eigen::Index i = begin; i < end; ++i) {
-    const double volume_i = fluid.m[i] / fluid.rho[i];
-    Eigen::Vector3d force_i = Eigen::Vector3d::Zero();
     double divergence = 0;
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
-      const Eigen::Vector3d S_k = vertex_normal.col(k) / 6.0;
-      const Eigen::Vector3d fik = -pressure_coupling_coefficient(volume_i, pressure[i], shepard(1, k), W[q]) * S_k;
+      divergence += s.weight[q] * (fluid.v.col(i) - wall.v.col(k)).dot(s.area_vector.col(k));
+    }
+    drho_dt[i] += 2.0 * fluid.rho[i] * divergence;
+  }
+}
+
+// The pair forces of fluid rows [begin, end): on the fluid into fluid_force, their reactions into
+// on_wall. With `backstop`, only the backstop's part, and its power (returned).
+template <bool kBackstop>
+double add_force_rows(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
+                      const PairList& pairs, const PressureCouplingScratch& s, Eigen::Index begin, Eigen::Index end,
+                      Eigen::Matrix3Xd& fluid_force, Eigen::Matrix3Xd& on_wall) {
+  const int* offset = pairs.offset.data();
+  const int* index = pairs.index.data();
+  double power = 0;
+  for (Eigen::Index i = begin; i < end; ++i) {
+    const double two_volume = 2.0 * fluid.m[i] / fluid.rho[i];
+    Eigen::Vector3d force_i = Eigen::Vector3d::Zero();
+    for (int q = offset[i]; q < offset[i + 1]; ++q) {
+      const int k = index[q];
+      const double coefficient = kBackstop ? s.backstop[q] : pressure[i] * s.weight[q];
+      if (coefficient == 0) continue;
+      const Eigen::Vector3d fik = -two_volume * coefficient * s.area_vector.col(k);
       force_i += fik;
       on_wall.col(k) -= fik;
-      divergence += W[q] * (fluid.v.col(i) - wall.v.col(k)).dot(S_k);
+      if (kBackstop) power += fik.dot(fluid.v.col(i) - wall.v.col(k));
     }
     fluid_force.col(i) += force_i;
-    drho_dt[i] += fluid.rho[i] * divergence;
   }
+  return power;
 }
 
 }  // namespace
 
-// What the passes add to wall particles goes through per-thread sums (block_sums.hpp).
-void pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
-                              const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
-                              const CubicSplineKernel& kernel, int threads, PressureCouplingScratch& scratch,
-                              Eigen::Matrix3Xd& fluid_force, Eigen::VectorXd& drho_dt, Eigen::Matrix3Xd& on_wall) {
-  scratch.pair_W.resize(static_cast<Eigen::Index>(pairs.index.size()));
-  double* W = scratch.pair_W.data();
-  auto& shepard = scratch.shepard;
-  shepard.setZero(2, wall.size());
-  scratch.shepard_sums.add(threads, pairs.rows(), shepard,
-                           [&](int, Eigen::Index begin, Eigen::Index end, Eigen::Matrix2Xd& out) {
-                             add_shepard_sums(fluid, pressure, wall, pairs, kernel, begin, end, W, out);
-                           });
-  for (Eigen::Index k = 0; k < wall.size(); ++k)
-    if (shepard(0, k) > 0) shepard(1, k) /= shepard(0, k);
-  on_wall.setZero(3, wall.size());
-  scratch.force_sums.add(threads, pairs.rows(), on_wall, [&](int, Eigen::Index begin, Eigen::Index end,
-                                                             Eigen::Matrix3Xd& out) {
-    add_pair_forces(fluid, pressure, wall, vertex_normal, pairs, W, shepard, begin, end, fluid_force, drho_dt, out);
+void pressure_coupling_weights(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x,
+                               const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
+                               const CubicSplineKernel& kernel, const PressureCouplingLaw& law, int threads,
+                               PressureCouplingScratch& scratch) {
+  const auto n_pairs = static_cast<Eigen::Index>(pairs.index.size());
+  scratch.weight.resize(n_pairs);
+  scratch.backstop.resize(n_pairs);
+  scratch.area_vector.resize(3, wall_x.cols());
+  for_blocks(threads, wall_x.cols(), [&](Eigen::Index begin, Eigen::Index end) {
+    scratch.area_vector.middleCols(begin, end - begin) = vertex_normal.middleCols(begin, end - begin) / 6.0;
   });
+  const double fade = kFadeOverH * kernel.h();
+  scratch.any_backstop = reduce_blocks<bool>(
+      threads, pairs.rows(),
+      [&](Eigen::Index begin, Eigen::Index end) {
+        return weigh_rows(fluid_x, wall_x, vertex_normal, pairs, kernel, law, fade, begin, end, scratch.weight.data(),
+                          scratch.backstop.data());
+      },
+      [](bool a, bool b) { return a || b; });
+}
+
+void add_pressure_coupling_density_rates(const FluidParticles& fluid, const WallParticles& wall, const PairList& pairs,
+                                         const PressureCouplingScratch& scratch, int threads, Eigen::VectorXd& drho_dt) {
+  for_blocks(threads, pairs.rows(), [&](Eigen::Index begin, Eigen::Index end) {
+    add_density_rows(fluid, wall, pairs, scratch, begin, end, drho_dt);
+  });
+}
+
+// What the rows add to wall particles goes through per-block sums (block_sums.hpp); the backstop's
+// part, when some pair has one, in a second pass of its own.
+double pressure_coupling_forces(const FluidParticles& fluid, const Eigen::VectorXd& pressure, const WallParticles& wall,
+                                const PairList& pairs, int threads, PressureCouplingScratch& scratch,
+                                Eigen::Matrix3Xd& fluid_force, Eigen::Matrix3Xd& on_wall,
+                                Eigen::Matrix3Xd& backstop_on_wall) {
+  on_wall.setZero(3, wall.size());
+  scratch.force_sums.add(threads, pairs.rows(), on_wall,
+                         [&](int, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& out) {
+                           add_force_rows<false>(fluid, pressure, wall, pairs, scratch, begin, end, fluid_force, out);
+                         });
+  backstop_on_wall.setZero(3, wall.size());
+  if (!scratch.any_backstop) return 0.0;
+  scratch.block_backstop_W.assign(static_cast<std::size_t>(std::max(threads, 1)), 0.0);
+  scratch.backstop_sums.add(threads, pairs.rows(), backstop_on_wall,
+                            [&](int block, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& out) {
+                              scratch.block_backstop_W[static_cast<std::size_t>(block)] = add_force_rows<true>(
+                                  fluid, pressure, wall, pairs, scratch, begin, end, fluid_force, out);
+                            });
+  on_wall += backstop_on_wall;
+  double power = 0;
+  for (double part : scratch.block_backstop_W) power += part;
+  return power;
 }
 
 }  // namespace cellsim
