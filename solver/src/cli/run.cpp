@@ -94,7 +94,7 @@ void run_case(Params p, const RunOptions& options) {
 
   std::vector<Record> records;
   DryingSummary drying;
-  const std::int64_t drying_steps = options.from_path.empty() || from_rest ? p.drying_steps : 0;
+  const std::int64_t drying_steps = options.from_path.empty() || from_rest ? *p.drying_steps : 0;
   const auto strain_reached = [&](const Record*) { return p.end_strain && sim.nominal_strain() >= *p.end_strain; };
   const SteadyStateCriterion steady = steady_state_criterion(p);
   const auto steady_reached = [&](const Record* recorded) {
@@ -127,7 +127,8 @@ void run_case(Params p, const RunOptions& options) {
       drying = saved.drying;
     }
     out.write_snapshot(sim.state(), sim.eos());
-    Progress progress(drying_steps + p.compression_steps, p.progress_interval_s, options.quiet);
+    const std::int64_t compression_steps = *p.compression_steps;
+    Progress progress(drying_steps + compression_steps, p.progress_interval_s, options.quiet);
     if (drying_steps > 0) {
       run_stage(sim, drying_steps, steady_reached, out, records, progress, "drying");
       if (drying.steady && !options.quiet)
@@ -136,9 +137,9 @@ void run_case(Params p, const RunOptions& options) {
     }
     drying.dried = drying_steps > 0 || (!options.from_path.empty() && !from_rest);
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
-    if (p.compression_steps > 0) {
+    if (compression_steps > 0) {
       sim.start_compression();
-      run_stage(sim, p.compression_steps, strain_reached, out, records, progress, "compression");
+      run_stage(sim, compression_steps, strain_reached, out, records, progress, "compression");
     }
     progress.finish(sim.state().time_s);
   } catch (const NumericalFailure& e) {

@@ -70,7 +70,7 @@ struct Params {
 
   // drying stage, model.md §5
   double dryness = 0;                   // X/X0
-  std::int64_t drying_steps = 0;        // the cap: drying ends earlier at steady state
+  std::optional<std::int64_t> drying_steps;  // the cap: drying ends earlier at steady state (auto: stage_caps.hpp)
   double steady_window_s = 0;           // steady_state.hpp: the window the criterion holds over
   double steady_pressure_tolerance = 0; // |P_mean - P_T(X)| / P_T0
   double steady_volume_tolerance = 0;   // (V_max - V_min) / V over the window
@@ -80,7 +80,7 @@ struct Params {
   double pressure_closure_time_s = 0;   // relaxation time of the wall-pressure closure (0: off)
 
   // compression stage, model.md §6 and Eq 22
-  std::int64_t compression_steps = 0;
+  std::optional<std::int64_t> compression_steps;  // the cap (auto: stage_caps.hpp)
   double plate_speed_m_s = 0;
   double compression_Lp_m_per_s_Pa = 0;
   double plate_gap_m = 0;               // initial gap of the top plate above the cell

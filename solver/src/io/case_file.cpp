@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "engine/density_update.hpp"
+#include "engine/stage_caps.hpp"
 #include "engine/steady_state.hpp"
 #include "io/case_schema.hpp"
 
@@ -64,7 +65,14 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
   if (value.is_null()) {
     if (!is_optional(spec))
       throw InputError(where + ": a value is required (" + describe_range(spec) + ", in " + spec.unit + ")");
-    p.*std::get<std::optional<double> Params::*>(spec.member) = std::nullopt;
+    std::visit(
+        [&](auto member) {
+          using M = decltype(member);
+          if constexpr (std::is_same_v<M, std::optional<double> Params::*> ||
+                        std::is_same_v<M, std::optional<std::int64_t> Params::*>)
+            p.*member = std::nullopt;
+        },
+        spec.member);
     return;
   }
   if (is_choice(spec)) {
@@ -88,7 +96,8 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
   std::visit(
       [&](auto member) {
         using M = decltype(member);
-        if constexpr (std::is_same_v<M, std::int64_t Params::*>)
+        if constexpr (std::is_same_v<M, std::int64_t Params::*> ||
+                      std::is_same_v<M, std::optional<std::int64_t> Params::*>)
           p.*member = static_cast<std::int64_t>(x);
         else if constexpr (std::is_same_v<M, Choice Params::*>)
           p.*member = static_cast<Choice>(x);  // not reached: choices are names (above)
@@ -202,6 +211,7 @@ Params validate_case(const json& doc) {
   }
   resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
   resolve_density_update(p);
+  resolve_stage_caps(p);
   return p;
 }
 
@@ -223,6 +233,8 @@ json case_to_json(const Params& p) {
           using M = decltype(member);
           if constexpr (std::is_same_v<M, std::int64_t Params::*>)
             value = p.*member;
+          else if constexpr (std::is_same_v<M, std::optional<std::int64_t> Params::*>)
+            value = (p.*member) ? json(*(p.*member)) : json(nullptr);
           else if constexpr (std::is_same_v<M, Choice Params::*>)
             value = spec.choices.at(static_cast<std::size_t>(p.*member));
           else if constexpr (std::is_same_v<M, double Params::*>)

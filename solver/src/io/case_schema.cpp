@@ -32,6 +32,12 @@ ParamSpec derived(std::string key, std::string unit, double to_si, std::optional
           std::move(meaning), std::move(equation), std::move(auto_rule), {}};
 }
 
+ParamSpec derived_integer(std::string key, std::optional<std::int64_t> Params::*member, double min, double max,
+                          std::string meaning, std::string equation, std::string auto_rule) {
+  return {std::move(key), "1", 1.0, member, std::nullopt, min, max, true, true,
+          std::move(meaning), std::move(equation), std::move(auto_rule), {}};
+}
+
 ParamSpec choice(std::string key, Choice Params::*member, std::vector<std::string> names, std::string meaning,
                  std::string equation) {
   const double last = static_cast<double>(names.size()) - 1;
@@ -148,9 +154,10 @@ std::vector<ParamSpec> build_specs() {
       // drying
       real("drying.dryness", "1", 1.0, &P::dryness, 1.0, 0, false, 1, true,
            "normalised moisture content X/X0 (1: fresh)", "Eq 21, model.md §5"),
-      integer("drying.steps", &P::drying_steps, 80000, 0, 1e9,
-              "most time steps of the drying stage: it ends earlier, at steady state (a case that reaches "
-              "the cap without it says so)", "model.md §5"),
+      derived_integer("drying.steps", &P::drying_steps, 0, 1e9,
+                      "most time steps of the drying stage: it ends earlier, at steady state (a case that reaches "
+                      "the cap without it says so)", "model.md §5",
+                      "80 us / time.dt_ns (80000 at 1 ns): a cap in time, whatever the time step"),
       real("drying.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::drying_Lp_m_per_s_Pa, 2.5e-6, 0, true, 1, true,
            "wall permeability L_p during drying (raised to reach steady state fast)", "Eq 11"),
       real("drying.ramp_time_us", "us", kMicro, &P::ramp_time_s, 20, 0, true, 1e6, true,
@@ -168,8 +175,9 @@ std::vector<ParamSpec> build_specs() {
       real("drying.pressure_closure_time_us", "us", kMicro, &P::pressure_closure_time_s, 2, 0, true, 1e6, true,
            "relaxation time of the wall-pressure closure during drying (0: off)", "docs/model-closures.md"),
       // compression
-      integer("compression.steps", &P::compression_steps, 25000, 0, 1e9,
-              "maximum time steps of the compression stage", "model.md §6"),
+      derived_integer("compression.steps", &P::compression_steps, 0, 1e9,
+                      "maximum time steps of the compression stage", "model.md §6",
+                      "25 us / time.dt_ns (25000 at 1 ns): a cap in time, whatever the time step"),
       real("compression.plate_speed_m_s", "m/s", 1.0, &P::plate_speed_m_s, 1, 0, false, 1000, true,
            "downward speed of the top plate", "model.md §6"),
       real("compression.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::compression_Lp_m_per_s_Pa, 1e-12, 0, true, 1, true,
@@ -225,11 +233,13 @@ const ParamSpec* find_param(const std::string& key) {
 }
 
 bool is_integer(const ParamSpec& spec) {
-  return std::holds_alternative<std::int64_t Params::*>(spec.member);
+  return std::holds_alternative<std::int64_t Params::*>(spec.member) ||
+         std::holds_alternative<std::optional<std::int64_t> Params::*>(spec.member);
 }
 
 bool is_optional(const ParamSpec& spec) {
-  return std::holds_alternative<std::optional<double> Params::*>(spec.member);
+  return std::holds_alternative<std::optional<double> Params::*>(spec.member) ||
+         std::holds_alternative<std::optional<std::int64_t> Params::*>(spec.member);
 }
 
 bool is_choice(const ParamSpec& spec) { return std::holds_alternative<Choice Params::*>(spec.member); }
@@ -278,7 +288,8 @@ std::string json_schema() {
       rule["enum"] = p.choices;
       rule["default"] = p.choices.front();
     } else {
-      rule["type"] = is_integer(p) ? json("integer") : is_optional(p) ? json({"number", "null"}) : json("number");
+      const json number = is_integer(p) ? json("integer") : json("number");
+      rule["type"] = is_optional(p) ? json({number, "null"}) : number;
       rule[p.min_inclusive ? "minimum" : "exclusiveMinimum"] = p.min;
       rule[p.max_inclusive ? "maximum" : "exclusiveMaximum"] = p.max;
       if (p.default_value)

@@ -11,8 +11,8 @@
 
 namespace cellsim {
 
-using ParamMember =
-    std::variant<double Params::*, std::int64_t Params::*, std::optional<double> Params::*, Choice Params::*>;
+using ParamMember = std::variant<double Params::*, std::int64_t Params::*, std::optional<double> Params::*,
+                                 Choice Params::*, std::optional<std::int64_t> Params::*>;
 
 struct ParamSpec {
   std::string key;          // JSON path, e.g. "wall.G_MPa"

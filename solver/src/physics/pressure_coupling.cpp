@@ -1,24 +1,32 @@
 #include "physics/pressure_coupling.hpp"
 
+#include <cmath>
+
 #include "parallel/threads.hpp"
 
 namespace cellsim {
 namespace {
 
-// Weights of the pairs of fluid rows [begin, end); returns true if any has a backstop.
-bool weigh_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const Eigen::Matrix3Xd& vertex_normal,
+// Weights of the pairs of fluid rows [begin, end); returns true if any has a backstop. Pairs the list
+// holds beyond the kernel's support (its skin) weigh nothing.
+bool weigh_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const Eigen::Matrix3Xd& unit_normal,
                 const PairList& pairs, const CubicSplineKernel& kernel, const PressureCouplingLaw& law, double fade,
                 Eigen::Index begin, Eigen::Index end, double* weight, double* backstop) {
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
+  const double support2 = kernel.support() * kernel.support();
   bool any = false;
   for (Eigen::Index i = begin; i < end; ++i) {
     const Eigen::Vector3d xi = fluid_x.col(i);
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
       const Eigen::Vector3d to_wall = wall_x.col(k) - xi;
-      const double W = kernel.W(to_wall.norm());
-      const double depth = W > 0 ? to_wall.dot(vertex_normal.col(k)) / vertex_normal.col(k).norm() : 0.0;
+      const double r2 = to_wall.squaredNorm();
+      if (r2 >= support2) {
+        weight[q] = backstop[q] = 0;
+        continue;
+      }
+      const double W = kernel.W(std::sqrt(r2)), depth = to_wall.dot(unit_normal.col(k));
       weight[q] = one_sided_weight(depth, fade) * W;
       backstop[q] = backstop_pressure_Pa(depth, law) * W;
       any = any || backstop[q] != 0;
@@ -78,14 +86,17 @@ void pressure_coupling_weights(const Eigen::Matrix3Xd& fluid_x, const Eigen::Mat
   scratch.weight.resize(n_pairs);
   scratch.backstop.resize(n_pairs);
   scratch.area_vector.resize(3, wall_x.cols());
+  scratch.unit_normal.resize(3, wall_x.cols());
   for_blocks(threads, wall_x.cols(), [&](Eigen::Index begin, Eigen::Index end) {
-    scratch.area_vector.middleCols(begin, end - begin) = vertex_normal.middleCols(begin, end - begin) / 6.0;
+    const auto N = vertex_normal.middleCols(begin, end - begin);
+    scratch.area_vector.middleCols(begin, end - begin) = N / 6.0;
+    scratch.unit_normal.middleCols(begin, end - begin) = N.colwise().normalized();
   });
   const double fade = kFadeOverH * kernel.h();
   scratch.any_backstop = reduce_blocks<bool>(
       threads, pairs.rows(),
       [&](Eigen::Index begin, Eigen::Index end) {
-        return weigh_rows(fluid_x, wall_x, vertex_normal, pairs, kernel, law, fade, begin, end, scratch.weight.data(),
+        return weigh_rows(fluid_x, wall_x, scratch.unit_normal, pairs, kernel, law, fade, begin, end, scratch.weight.data(),
                           scratch.backstop.data());
       },
       [](bool a, bool b) { return a || b; });

@@ -56,6 +56,7 @@ inline double backstop_pressure_Pa(double depth, const PressureCouplingLaw& law)
 struct PressureCouplingScratch {
   Eigen::VectorXd weight, backstop;
   Eigen::Matrix3Xd area_vector;  // S_k = N_k / 6 (N_k: the sum of the adjacent triangles' area normals)
+  Eigen::Matrix3Xd unit_normal;  // N_k / |N_k|
   bool any_backstop = false;     // some pair has backstop != 0
   BlockSums<Eigen::Matrix3Xd> force_sums, backstop_sums;
   std::vector<double> block_backstop_W;
