@@ -46,7 +46,7 @@ Eigen::VectorXd continuity_rate(const Simulation& sim, const FluidParticles& f, 
   FluidRates rates;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, sim.eos(), p.viscosity_Pa_s, 1, rates, 0.0, PairTerms::Continuity);
   PressureCouplingScratch scratch;
-  pressure_coupling_weights(f, w.x, wall_surface(w.x, sim.mesh()).vertex_normal, lists.fluid_wall(), kernel, {}, 1,
+  pressure_coupling_weights(f.x, w.x, wall_surface(w.x, sim.mesh()).vertex_normal, lists.fluid_wall(), kernel, {}, 1,
                             scratch);
   add_pressure_coupling_density_rates(f, w, lists.fluid_wall(), scratch, 1, rates.drho_dt);
   return rates.drho_dt;

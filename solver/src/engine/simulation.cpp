@@ -325,7 +325,7 @@ void Simulation::advance_density(double dt) {
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, continuity_,
                    p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(), PairTerms::Continuity);
   if (p_.coupling_model == kPressure) {
-    pressure_coupling_weights(s_.fluid, s_.wall.x, surface_.vertex_normal, neighbours_.fluid_wall(), kernel,
+    pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, neighbours_.fluid_wall(), kernel,
                               pressure_coupling_law(), threads_, pressure_coupling_scratch_);
     add_pressure_coupling_density_rates(s_.fluid, s_.wall, neighbours_.fluid_wall(), pressure_coupling_scratch_,
                                         threads_, continuity_.drho_dt);
@@ -399,7 +399,7 @@ void Simulation::wall_fluid_terms(bool weights_fresh) {
   if (p_.coupling_model == kPressure) {
     const PairList& pairs = neighbours_.fluid_wall();
     if (!weights_fresh) {
-      pressure_coupling_weights(s_.fluid, s_.wall.x, surface_.vertex_normal, pairs,
+      pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, pairs,
                                 CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_law(), threads_,
                                 pressure_coupling_scratch_);
       if (!drift_density_)

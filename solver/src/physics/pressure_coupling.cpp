@@ -44,9 +44,9 @@ void add_density_rows(const FluidParticles& fluid, const WallParticles& wall, co
     double divergence = 0;
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
-      divergence += s.weight[q] * s.inverse_fill[k] * (fluid.v.col(i) - wall.v.col(k)).dot(s.area_vector.col(k));
+      divergence += s.weight[q] * (fluid.v.col(i) - wall.v.col(k)).dot(s.area_vector.col(k));
     }
-    drho_dt[i] += fluid.rho[i] * divergence;
+    drho_dt[i] += 2.0 * fluid.rho[i] * divergence;
   }
 }
 
@@ -60,14 +60,13 @@ double add_force_rows(const FluidParticles& fluid, const Eigen::VectorXd& pressu
   const int* index = pairs.index.data();
   double power = 0;
   for (Eigen::Index i = begin; i < end; ++i) {
-    const double volume = fluid.m[i] / fluid.rho[i];
+    const double two_volume = 2.0 * fluid.m[i] / fluid.rho[i];
     Eigen::Vector3d force_i = Eigen::Vector3d::Zero();
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
-      // The backstop's pressure acts as the pair's with a flat wall's 1/gamma = 2.
-      const double coefficient = kBackstop ? 2.0 * s.backstop[q] : pressure[i] * s.weight[q] * s.inverse_fill[k];
+      const double coefficient = kBackstop ? s.backstop[q] : pressure[i] * s.weight[q];
       if (coefficient == 0) continue;
-      const Eigen::Vector3d fik = -volume * coefficient * s.area_vector.col(k);
+      const Eigen::Vector3d fik = -two_volume * coefficient * s.area_vector.col(k);
       force_i += fik;
       on_wall.col(k) -= fik;
       if (kBackstop) power += fik.dot(fluid.v.col(i) - wall.v.col(k));
@@ -79,18 +78,7 @@ double add_force_rows(const FluidParticles& fluid, const Eigen::VectorXd& pressu
 
 }  // namespace
 
-// Each fluid row adds V_i w W to gamma_k of its wall particles (wall particles anywhere: block sums).
-void add_fill_rows(const FluidParticles& fluid, const PairList& pairs, const double* weight, Eigen::Index begin,
-                   Eigen::Index end, Eigen::VectorXd& fill) {
-  const int* offset = pairs.offset.data();
-  const int* index = pairs.index.data();
-  for (Eigen::Index i = begin; i < end; ++i) {
-    const double volume = fluid.m[i] / fluid.rho[i];
-    for (int q = offset[i]; q < offset[i + 1]; ++q) fill[index[q]] += volume * weight[q];
-  }
-}
-
-void pressure_coupling_weights(const FluidParticles& fluid, const Eigen::Matrix3Xd& wall_x,
+void pressure_coupling_weights(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x,
                                const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
                                const CubicSplineKernel& kernel, const PressureCouplingLaw& law, int threads,
                                PressureCouplingScratch& scratch) {
@@ -108,16 +96,10 @@ void pressure_coupling_weights(const FluidParticles& fluid, const Eigen::Matrix3
   scratch.any_backstop = reduce_blocks<bool>(
       threads, pairs.rows(),
       [&](Eigen::Index begin, Eigen::Index end) {
-        return weigh_rows(fluid.x, wall_x, scratch.unit_normal, pairs, kernel, law, fade, begin, end,
-                          scratch.weight.data(), scratch.backstop.data());
+        return weigh_rows(fluid_x, wall_x, scratch.unit_normal, pairs, kernel, law, fade, begin, end, scratch.weight.data(),
+                          scratch.backstop.data());
       },
       [](bool a, bool b) { return a || b; });
-  scratch.fill.setZero(wall_x.cols());
-  scratch.fill_sums.add(threads, pairs.rows(), scratch.fill, [&](int, Eigen::Index begin, Eigen::Index end,
-                                                                 Eigen::VectorXd& out) {
-    add_fill_rows(fluid, pairs, scratch.weight.data(), begin, end, out);
-  });
-  scratch.inverse_fill = 1.0 / scratch.fill.array().max(kLeastFill);
 }
 
 void add_pressure_coupling_density_rates(const FluidParticles& fluid, const WallParticles& wall, const PairList& pairs,

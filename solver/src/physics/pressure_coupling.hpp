@@ -5,17 +5,12 @@
 // divergence theorem on the cut kernel). With the wall's pressure mirrored, P_w = P_i, each wall
 // particle k returns that push from the surface it owns (S_k: a third of each adjacent triangle's
 // outward area vector), and the continuity equation (Eq 10) gets the wall's matching term:
-//   F_ik = -V_i P_i c_ik S_k on fluid i, and -F_ik on wall particle k;
-//   d(rho_i)/dt += rho_i c_ik S_k . (v_i - v_k),   c_ik = w_ik W(r_ik) / gamma_k,
-// with gamma_k = sum_i V_i w_ik W(r_ik) the part of wall particle k's kernel the fluid fills (1/2 at
-// a flat wall, less where the wall bends away from the fluid or the fluid stands off it). So
-// sum_i V_i c_ik = 1: the wall carries exactly P S_k in a uniform pressure, and the fluid's SPH volume
-// follows exactly the volume the wall sweeps (with a fixed 1/gamma = 2 it lost a tenth of what the
-// plate swept, where the fluid fills 0.46 of the kernels under it, and the pressure with it). The force
-// and the density term are conjugate: the pair's power, -V_i P_i c S_k . v_ik, is exactly what its
-// density term adds to the internal energy (m P / rho^2 d(rho)), so the pair neither makes nor destroys
-// energy. A wall particle the fluid hardly reaches (gamma_k < kLeastFill) keeps 1/gamma at 1/kLeastFill,
-// so that a lone fluid particle at the edge of its kernel is not handed the whole of its area.
+//   F_ik = -2 V_i P_i w_ik W(r_ik) S_k on fluid i, and -F_ik on wall particle k;
+//   d(rho_i)/dt += 2 rho_i w_ik W(r_ik) S_k . (v_i - v_k).
+// The 2 is 1/gamma: at a flat wall half the kernel is missing, so sum_i V_i W_ik = 1/2, the wall
+// carries P S_k, and the fluid's SPH volume follows the volume the wall sweeps. The force and the
+// density term are conjugate: the pair's power, -2 V_i P_i w W S_k . v_ik, is exactly what its density
+// term adds to the internal energy (m P / rho^2 d(rho)), so the pair neither makes nor destroys energy.
 // w_ik is one-sided: a wall element seen from outside its tangent plane fades out over kFadeOverH h, so
 // at an inward fold the far sheet of wall neither pushes fluid through the near one nor squeezes it.
 // A short-range backstop keeps a particle from crossing the wall: closer than d_b to an element's
@@ -33,8 +28,6 @@ namespace cellsim {
 
 // A wall element seen from outside fades out of the coupling over this depth, in units of h.
 constexpr double kFadeOverH = 0.1;
-// gamma_k is taken as at least this (half of a flat wall's 1/2: a right-angled corner of fluid).
-constexpr double kLeastFill = 0.25;
 
 struct PressureCouplingLaw {
   double backstop_range_m = 0;     // d_b (0: no backstop)
@@ -59,12 +52,9 @@ inline double backstop_pressure_Pa(double depth, const PressureCouplingLaw& law)
 }
 
 // Kept by the caller between steps (no reallocation). Per listed pair q: weight = w W and backstop =
-// p_b W at the positions of the last pressure_coupling_weights; per wall particle, S_k and
-// 1 / max(gamma_k, kLeastFill).
+// p_b W at the positions of the last pressure_coupling_weights; per wall particle, S_k.
 struct PressureCouplingScratch {
   Eigen::VectorXd weight, backstop;
-  Eigen::VectorXd fill, inverse_fill;  // gamma_k, and 1 / max(gamma_k, kLeastFill)
-  BlockSums<Eigen::VectorXd> fill_sums;
   Eigen::Matrix3Xd area_vector;  // S_k = N_k / 6 (N_k: the sum of the adjacent triangles' area normals)
   Eigen::Matrix3Xd unit_normal;  // N_k / |N_k|
   bool any_backstop = false;     // some pair has backstop != 0
@@ -72,9 +62,8 @@ struct PressureCouplingScratch {
   std::vector<double> block_backstop_W;
 };
 
-// The pairs' weights at the current positions, and each wall particle's gamma_k with the fluid's
-// volumes. vertex_normal: N_k (surface.hpp; |N_k| = twice the area).
-void pressure_coupling_weights(const FluidParticles& fluid, const Eigen::Matrix3Xd& wall_x,
+// The pairs' weights at the current positions. vertex_normal: N_k (surface.hpp; |N_k| = twice the area).
+void pressure_coupling_weights(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x,
                                const Eigen::Matrix3Xd& vertex_normal, const PairList& pairs,
                                const CubicSplineKernel& kernel, const PressureCouplingLaw& law, int threads,
                                PressureCouplingScratch& scratch);
