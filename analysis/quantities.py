@@ -10,6 +10,7 @@ QUANTITIES = {
     "mean_pressure_Pa": ("mean fluid pressure [kPa]", 1e-3),
     "area_m2": ("wall area [10^3 um^2]", 1e9),
     "volume_m3": ("cell volume [10^6 um^3]", 1e12),
+    "fluid_volume_ratio": ("fluid's SPH volume / enclosed volume", 1.0),
     "equivalent_diameter_m": ("equivalent diameter [um]", 1e6),
     "smoothing_length_m": ("smoothing length h [um]", 1e6),
     "cell_height_m": ("cell height [um]", 1e6),
@@ -56,6 +57,7 @@ QUANTITIES = {
     "drive_energy_J": ("energy put in by the drying ramp [nJ]", 1e9),
     "density_diffusion_energy_J": ("energy put in by the density diffusion [nJ]", 1e9),
     "backstop_work_J": ("work of the pressure coupling's backstop [nJ]", 1e9),
+    "volume_closure_energy_J": ("energy of the volume closure [nJ]", 1e9),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
 }
 

@@ -89,6 +89,7 @@ struct Params {
   double plate_length_m = 0;            // footprint in x
   double plate_width_m = 0;             // footprint in y
   std::optional<double> end_strain;     // stop compression at this nominal strain
+  std::optional<double> volume_closure_time_s;  // relaxation time of the volume closure (0: off; auto: by coupling)
 
   // time integration, model.md §7
   double dt_s = 0;

@@ -51,12 +51,14 @@ struct EnergyFlows {
   double drive_J = 0;          // put in by the drying ramp of P_T and L_ref (explicit time dependence)
   double density_diffusion_J = 0;  // put into the internal energy by delta-SPH (fluid.density_diffusion)
   double backstop_work_J = 0;  // done by the pressure coupling's backstop (coupling.backstop_range_over_dx)
+  double volume_closure_J = 0;  // changed by the volume closure's density scaling (compression only)
 };
 
 struct State {
   FluidParticles fluid;
   WallParticles wall;
   Plates plates;
+  std::vector<double> start_volume_ratio;  // per cell: sum(m/rho) / enclosed volume when compression started
   std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
   std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
   Stage stage = Stage::Drying;

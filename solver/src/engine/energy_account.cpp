@@ -60,6 +60,14 @@ double mass_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos
   return (factor - 1.0) * energy;
 }
 
+double density_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
+                                Eigen::Index end) {
+  double energy = 0;
+  for (Eigen::Index i = begin; i < end; ++i)
+    energy += f.m[i] * (eos.internal_energy_J_kg(factor * f.rho[i]) - eos.internal_energy_J_kg(f.rho[i]));
+  return energy;
+}
+
 double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double turgor_rate_Pa_s,
                      double contraction_times_l0_N_m, double L_ref_shortening_rate_1_s) {
   double per_turgor = 0;  // d(stored energy)/dP_T = sum m (1/rho0 - 1/rho)
@@ -69,7 +77,8 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
   const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
-                        flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J;
+                        flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J +
+                        flows.volume_closure_J;
   return now.total_J() - flows.initial_J - put_in;
 }
 

@@ -69,6 +69,10 @@ double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_
 double mass_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
                              Eigen::Index end);
 
+// The internal energy a scaling of particles [begin, end)'s densities by factor (masses kept) adds.
+double density_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
+                                Eigen::Index end);
+
 // d/dt of the stored energy at fixed particles while the drying ramps P_T and L_ref (drying.hpp):
 // dP_T/dt sum m (1/rho0 - 1/rho) + c (1 - X) d(ramp)/dt sum k_wc (l - L_ref) l0.
 double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double turgor_rate_Pa_s,

@@ -45,6 +45,9 @@ const std::vector<Quantity>& quantities() {
        &Record::mean_pressure_Pa},
       {"area_m2", "m^2", "wall area: sum of the wall triangles' areas", &Record::area_m2},
       {"volume_m3", "m^3", "enclosed volume: sum of signed tetrahedra (origin, triangle)", &Record::volume_m3},
+      {"fluid_volume_ratio", "1",
+       "the fluid's SPH volume sum(m/rho) / the enclosed volume (every cell's): the volume bookkeeping the volume "
+       "closure holds during compression", &Record::fluid_volume_ratio},
       {"equivalent_diameter_m", "m", "diameter of the sphere of the enclosed volume (D in Eq 6)",
        &Record::equivalent_diameter_m},
       {"smoothing_length_m", "m", "SPH smoothing length h (Eq 6)", &Record::smoothing_length_m},
@@ -123,9 +126,12 @@ const std::vector<Quantity>& quantities() {
        &Record::density_diffusion_energy_J},
       {"backstop_work_J", "J", "work of the pressure coupling's backstop on fluid and wall since t = 0 (0 for LJ)",
        &Record::backstop_work_J},
+      {"volume_closure_energy_J", "J",
+       "internal energy the volume closure's density scaling added since t = 0 (compression only)",
+       &Record::volume_closure_energy_J},
       {"energy_residual_J", "J",
        "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
-       "diffusion + backstop work): the error of the energy account",
+       "diffusion + backstop work + volume closure): the error of the energy account",
        &Record::energy_residual_J},
   };
   return q;
@@ -158,6 +164,7 @@ void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Re
   r.drive_energy_J = flows.drive_J;
   r.density_diffusion_energy_J = flows.density_diffusion_J;
   r.backstop_work_J = flows.backstop_work_J;
+  r.volume_closure_energy_J = flows.volume_closure_J;
   r.energy_residual_J = energy_residual_J(stored, flows);
 }
 
@@ -178,6 +185,7 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;
   r.area_m2 = surface.area_m2;
   r.volume_m3 = surface.volume_m3;
+  r.fluid_volume_ratio = (f.m.array() / f.rho.array()).sum() / surface.volume_m3;
   r.equivalent_diameter_m = equivalent_diameter_m(r.volume_m3);
   r.smoothing_length_m = s.smoothing_length_m;
   r.cell_height_m = cell_height_m(w.x);

@@ -18,7 +18,7 @@ namespace cellsim {
 struct Record {
   double time_s, stage, step;
   double fluid_mass_kg, fluid_mass_ratio, mean_pressure_Pa;
-  double area_m2, volume_m3, equivalent_diameter_m, smoothing_length_m;
+  double area_m2, volume_m3, fluid_volume_ratio, equivalent_diameter_m, smoothing_length_m;
   double cell_height_m, equatorial_radius_m;
   double max_fluid_speed_m_s, kinetic_energy_fluid_J, kinetic_energy_wall_J, wall_strain_mean;
   double wall_tension_N_m, wall_pressure_Pa;
@@ -31,7 +31,7 @@ struct Record {
   double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
   double coupling_energy_J, plate_energy_J, stored_energy_J;
   double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
-  double density_diffusion_energy_J, backstop_work_J;
+  double density_diffusion_energy_J, backstop_work_J, volume_closure_energy_J;
   double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
   std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;

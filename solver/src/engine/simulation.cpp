@@ -15,6 +15,7 @@
 #include "physics/plates.hpp"
 #include "physics/pressure_closure.hpp"
 #include "physics/pressure_coupling.hpp"
+#include "physics/volume_closure.hpp"
 #include "physics/wall_fluid.hpp"
 #include "physics/wall_terms.hpp"
 
@@ -263,6 +264,7 @@ void Simulation::step() {
   compute_rates(drift_density_ ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) apply_pressure_closure();
+  if (s_.stage == Stage::Compression) apply_volume_closure();
   ++s_.step;
   ++s_.stage_step;
   check_state();
@@ -488,6 +490,28 @@ void Simulation::apply_pressure_closure() {
   });
 }
 
+std::vector<double> Simulation::cell_volume_ratios() const {
+  const std::vector<double> sph_volume = sum_by_cell(threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) {
+    return (s_.fluid.m.segment(begin, end - begin).array() / s_.fluid.rho.segment(begin, end - begin).array()).sum();
+  });
+  std::vector<double> ratio(sph_volume.size());
+  for (std::size_t c = 0; c < ratio.size(); ++c) ratio[c] = sph_volume[c] / surface_.cell_volume_m3[c];
+  return ratio;
+}
+
+// The volume closure (volume_closure.hpp), each cell on its own: during compression only.
+void Simulation::apply_volume_closure() {
+  if (!(*p_.volume_closure_time_s > 0) || s_.start_volume_ratio.empty()) return;
+  const std::vector<double> ratio = cell_volume_ratios();
+  const EquationOfState state_eos = eos();
+  for (int c = 0; c < cells_.count(); ++c) {
+    const double factor = volume_closure_factor(ratio[c], s_.start_volume_ratio[c], p_.dt_s, *p_.volume_closure_time_s);
+    s_.energy.volume_closure_J += density_scaling_energy_J(s_.fluid, state_eos, factor, cells_.fluid[c],
+                                                           cells_.fluid[c + 1]);
+    s_.fluid.rho.segment(cells_.fluid[c], cells_.fluid_count(c)) *= factor;
+  }
+}
+
 void Simulation::start_at_rest() {
   s_.fluid.v.setZero();
   s_.wall.v.setZero();
@@ -617,6 +641,7 @@ void Simulation::start_compression() {
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
   compute_rates();
+  s_.start_volume_ratio = cell_volume_ratios();  // what the volume closure holds (volume_closure.hpp)
 }
 
 void Simulation::restore(const State& saved) {

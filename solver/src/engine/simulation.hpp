@@ -96,6 +96,8 @@ class Simulation {
   void kick(double half_dt);
   void drift(double dt);
   void apply_pressure_closure();
+  void apply_volume_closure();
+  std::vector<double> cell_volume_ratios() const;  // per cell: sum(m/rho) / enclosed volume
   void check_state() const;
   void check_time_step() const;
   void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference

@@ -15,6 +15,7 @@
 #include "engine/stage_caps.hpp"
 #include "engine/steady_state.hpp"
 #include "io/case_schema.hpp"
+#include "physics/volume_closure.hpp"
 
 namespace cellsim {
 namespace {
@@ -212,6 +213,7 @@ Params validate_case(const json& doc) {
   resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
   resolve_density_update(p);
   resolve_stage_caps(p);
+  resolve_volume_closure(p);
   return p;
 }
 

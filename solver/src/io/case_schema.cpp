@@ -195,6 +195,10 @@ std::vector<ParamSpec> build_specs() {
       derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
               "stop compression when the nominal strain reaches this value", "model.md §6",
               "none: run all compression.steps"),
+      derived("compression.volume_closure_time_us", "us", kMicro, &P::volume_closure_time_s, 0, true, 1e6, true,
+              "relaxation time over which a closed cell's fluid volume sum(m/rho) is held to the volume its wall "
+              "encloses during compression, at their ratio when it started (0: off)", "docs/model-closures.md",
+              "1 (pressure), 0 (lennard_jones)"),
       // time
       real("time.dt_ns", "ns", 1e-9, &P::dt_s, 1, 0, false, 1000, true,
            "time step (checked against the wall-spring limit at the start, the CFL limits every step)", "model.md §7"),

@@ -33,6 +33,7 @@ constexpr EnergyField kEnergyFields[] = {
     {"energy_mass_transfer_J", &EnergyFlows::mass_transfer_J}, {"energy_closure_J", &EnergyFlows::closure_J},
     {"energy_drive_J", &EnergyFlows::drive_J},     {"energy_density_diffusion_J", &EnergyFlows::density_diffusion_J},
     {"energy_backstop_work_J", &EnergyFlows::backstop_work_J},
+    {"energy_volume_closure_J", &EnergyFlows::volume_closure_J},
 };
 
 }  // namespace
