@@ -120,6 +120,11 @@ def check(config, root="."):
         if "key" not in spec and ("base_value" not in spec or "coupled" not in spec):
             raise ConfigError(f"axes.{axis}: an axis without a key needs base_value and coupled (the keys each "
                               "value sets)")
+    keyed = [(axis, spec["key"]) for axis, spec in axes.items() if "key" in spec]
+    for i, (axis, key) in enumerate(keyed):
+        other = next((a for a, k in keyed[:i] if k == key), None)
+        if other:
+            raise ConfigError(f"axes.{axis}: its key '{key}' is axis {other}'s too: two axes cannot set one key")
     labels = [spec["label"] for spec in axes.values()]
     if len(set(labels)) != len(labels):
         raise ConfigError(f"axes: labels must be distinct, got {labels}")

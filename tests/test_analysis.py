@@ -33,8 +33,13 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     keep their names (hidden axes at their base value are not named)."""
     cases = matrix.expand(config)
     convergence = matrix.target_cases(config, cases, "convergence")
-    assert len(convergence) == 18  # 3 dryness x (3 LJ levels + pressure at level 1 + dt 0.5 for both)
+    # The LJ studies: 3 dryness x (3 levels + pressure at level 1 + dt 0.5 for both) = 18; the ladder and
+    # its anchors and sweeps: 32 more (config/config.yaml says which)
+    assert len(convergence) == 50
     assert "Cpressure_D150_G18_P200_t6_v1_X0.5" in convergence  # a name: the coupling axis takes names
+    ladder = cases["Cpressure_D150_dt0.5_G18_H1.2_P200_R3_t6_v1_X0.1"]  # a single-valued axis fixes a setting
+    assert ladder.case["fluid"]["h_over_dx"] == 1.2 and ladder.case["time"]["dt_ns"] == 0.5
+    assert ladder.values["smoothing"] == 1.2 and ladder.values["resolution"] == 3
     fine = cases["D150_dt0.5_G18_P200_R3_t6_v1_X0.1"]
     assert fine.case["cell"]["n_fluid"] == 24656 and fine.case["cell"]["n_wall"] == 8268
     assert fine.case["time"]["dt_ns"] == 0.5 and fine.values["dt_ns"] == 0.5 and fine.values["resolution"] == 3

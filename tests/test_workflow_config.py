@@ -81,6 +81,8 @@ def write_config(tmp_path, change):
     ({"references": {"r": {"file": "data/references/none.csv", "strain_unit": "1", "stress_unit": "kPa",
                            "label": "l", "provenance": "p"}}},
      ["references.r.file: no such file 'data/references/none.csv'"]),               # missing file
+    ({"axes": {"G_again": {"key": "wall.G_MPa", "label": "Gg"}}},
+     ["G_again", "its key 'wall.G_MPa'", "two axes cannot set one key"]),            # two axes, one key
 ])
 def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, change, named):
     done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")

@@ -23,19 +23,38 @@ def test_table_has_every_refinement_with_its_changes(convergence_run):
     time_step = table[table["study"] == "convergence_time_step"]
     assert sorted(zip(time_step["coupling"], time_step["dt_ns"])) == [
         ("lennard_jones", 0.5), ("lennard_jones", 1.0), ("pressure", 0.5), ("pressure", 1.0)]
-    finer = table.dropna(subset=["change_smoothed_stress_kPa_at_0.05"])
-    assert len(finer) == 3  # one change per pair of successive refinements
+    ladder = table[table["study"] == "pressure_resolution"]
+    assert list(ladder["resolution"]) == [1, 2] and set(ladder["coupling"]) == {"pressure"}
+    assert ladder["dt_ns"].eq(0.5).all()  # one time step at every level
+    sweeps = {study: sorted(rows[rows["refined_axis"].iloc[0]]) for study, rows in table.groupby("study")
+              if study in ("smoothing_ratio", "bulk_modulus", "fast_plates")}
+    assert sweeps == {"smoothing_ratio": [0.888, 1.2], "bulk_modulus": [20, 40], "fast_plates": [1, 5]}
+    studies = table.groupby("study").size()
+    assert (table.dropna(subset=["change_smoothed_stress_kPa_at_0.05"]).groupby("study").size() == studies - 1).all()
     assert table["smoothed_stress_kPa_at_0.05"].gt(0).all()
     assert table["load_fluid_share"].between(0, 1.5).all()
+    pressure = table[table["coupling"] == "pressure"]
+    assert pressure["compression_energy_residual_over_work"].abs().lt(0.01).all()  # the account closes
+    assert pressure["load_backstop_share"].between(0, 0.5).all()
+
+
+def test_anchors_table_has_each_anchor_against_its_analytic_value(convergence_run):
+    anchors = pd.read_csv(convergence_run / "tables" / "convergence" / "anchors.csv")
+    assert set(anchors["anchor"]) == {"breathing mode", "Young-Laplace", "membrane force"}
+    assert (anchors["analytic"] > 0).all() and anchors["measured / analytic"].notna().sum() >= len(anchors) - 1
+    laplace = anchors[anchors["anchor"] == "Young-Laplace"]
+    assert sorted({q.split(" at ")[1] for q in laplace["quantity"]}) == ["200 kPa [kPa]", "2000 kPa [kPa]"]
+    assert laplace["met"].all()  # a cell at rest meets Young-Laplace at any resolution
 
 
 def test_page_and_figures_are_written_and_the_default_target_is_not(root, convergence_run, tmp_path):
     page = (convergence_run / "report" / "convergence.html").read_text()
-    for section in ("Verdicts", "Resolution convergence", "Time-step convergence", "The two wall-fluid couplings"):
+    for section in ("Verdicts", "Analytic anchors", "Resolution convergence", "Time-step convergence",
+                    "The two wall-fluid couplings", "Resolution convergence, pressure coupling"):
         assert section in page, section
     config = workflow_config(root, CI + [REDUCED], convergence_run)
     figures = matrix.target_figures(config, "convergence")
-    assert figures == ["conv01", "conv02", "conv03", "conv04"]
+    assert figures == [f"conv{n:02d}" for n in range(1, 11)]
     check_figures(config, convergence_run, root, tmp_path, figures)
     for fig in figures:
         assert f"figures/{fig}.png" in page

@@ -1,5 +1,7 @@
 # The convergence studies (config: studies with `target: convergence`): their runs, tables, figures
 # and page, built by `snakemake --cores 2 convergence`, never by the default target.
+from analysis import convergence  # noqa: E402
+
 CONVERGENCE_CASES = matrix.target_cases(config, CASES, "convergence")
 CONVERGENCE_FIGURES = matrix.target_figures(config, "convergence")
 
@@ -23,6 +25,7 @@ rule aggregate_convergence:
 rule convergence_page:
     input:
         summary=f"{OUT}/tables/convergence/summary.csv",
+        anchors=f"{OUT}/tables/convergence/anchors.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=CONVERGENCE_FIGURES),
         code="analysis/convergence.py",
     output:
@@ -30,3 +33,13 @@ rule convergence_page:
         table=f"{OUT}/tables/convergence/convergence.csv",
     script:
         "../scripts/convergence.py"
+
+
+rule convergence_anchors:
+    input:
+        runs=[run_file(c) for _, c, _ in convergence.anchor_runs(config, CASES)],
+        code="analysis/anchors.py",
+    output:
+        table=f"{OUT}/tables/convergence/anchors.csv",
+    script:
+        "../scripts/anchors.py"
