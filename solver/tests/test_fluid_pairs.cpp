@@ -35,6 +35,20 @@ FluidParticles random_fluid(int n_side, double dx, unsigned seed) {
   return f;
 }
 
+// A random fluid of n_side^3 particles on spacing dx with its pair list (a skin of 0.2 dx) for a kernel of
+// h = 1.3 dx, and the tests' EOS (P_T 200 kPa, K 20 MPa).
+struct ListedFluid {
+  ListedFluid(int n_side, double dx, unsigned seed)
+      : f(random_fluid(n_side, dx, seed)), kernel(1.3 * dx), lists(0.2 * dx) {
+    lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  }
+  const PairList& pairs() const { return lists.fluid_fluid(); }
+  FluidParticles f;
+  CubicSplineKernel kernel;
+  NeighbourLists lists;
+  EquationOfState eos{2e5, 20e6, 1000, 7};
+};
+
 }  // namespace
 
 // Eqs 3 and 4 (Morris' form) and 10 written out here rather than taken from sph_terms.hpp, one pair
@@ -88,11 +102,8 @@ void expect_plain_sums(const FluidParticles& f, const EquationOfState& eos, cons
 
 TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
   const double dx = 7.7e-6, viscosity = 0.1;
-  const FluidParticles f = random_fluid(7, dx, 21);
-  const CubicSplineKernel kernel(1.3 * dx);
-  const EquationOfState eos{2e5, 20e6, 1000, 7};
-  NeighbourLists lists(0.2 * dx);
-  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const ListedFluid fluid(7, dx, 21);
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
   FluidRates rates;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, rates);
   const PlainSums plain = plain_pair_sums(f, kernel, eos, viscosity);
@@ -105,11 +116,8 @@ TEST(FluidPairs, LanesAgreeWithAPlainSumOverEveryPair) {
 // without creating any: sum of V_i d(rho_i)/dt is unchanged by it.
 TEST(FluidPairs, DensityDiffusionAgreesWithAPlainSumAndCreatesNoDensity) {
   const double dx = 7.7e-6, viscosity = 0.1, diffusion = 0.1 * 1.3 * dx * 374.0;  // delta h c0
-  const FluidParticles f = random_fluid(7, dx, 5);
-  const CubicSplineKernel kernel(1.3 * dx);
-  const EquationOfState eos{2e5, 20e6, 1000, 7};
-  NeighbourLists lists(0.2 * dx);
-  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const ListedFluid fluid(7, dx, 5);
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
   FluidRates with, without;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, with, diffusion);
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, without);
@@ -125,11 +133,8 @@ TEST(FluidPairs, DensityDiffusionAgreesWithAPlainSumAndCreatesNoDensity) {
 // viscous loss and zero density rates.
 TEST(FluidPairs, TheContinuityAndForcePassesSplitTheOnePass) {
   const double dx = 7.7e-6, viscosity = 0.1, diffusion = 0.1 * 1.3 * dx * 374.0;
-  const FluidParticles f = random_fluid(7, dx, 9);
-  const CubicSplineKernel kernel(1.3 * dx);
-  const EquationOfState eos{2e5, 20e6, 1000, 7};
-  NeighbourLists lists(0.2 * dx);
-  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const ListedFluid fluid(7, dx, 9);
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
   FluidRates all, continuity, forces;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, all, diffusion);
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, 1, continuity, diffusion, PairTerms::Continuity);
@@ -152,11 +157,8 @@ TEST(FluidPairs, TheContinuityAndForcePassesSplitTheOnePass) {
 // chunks every record must still be written before it is read, and every sum zeroed before it adds.
 TEST(FluidPairs, ChunksOfRowsInEveryThreadBlockAgreeWithAPlainSum) {
   const double dx = 7.7e-6, viscosity = 0.1;
-  const FluidParticles f = random_fluid(14, dx, 3);  // 2744 particles: 4 blocks of 2-3 chunks
-  const CubicSplineKernel kernel(1.3 * dx);
-  const EquationOfState eos{2e5, 20e6, 1000, 7};
-  NeighbourLists lists(0.2 * dx);
-  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const ListedFluid fluid(14, dx, 3);  // 2744 particles: 4 blocks of 2-3 chunks
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
   const PlainSums plain = plain_pair_sums(f, kernel, eos, viscosity);
   // One block; four blocks on four threads; four on one thread, in turn (block 0 reads block 1's
   // first records before block 1 runs, so they must have been written before the barrier).
@@ -210,11 +212,8 @@ TEST(FluidPairs, ListRowsArePaddedToWholeLanesWithAnIndexPastTheFluid) {
 TEST(FluidPairs, ThreadsAgreeToRoundOffAndEachCountIsReproducible) {
   if (!built_with_openmp()) GTEST_SKIP() << "built without OpenMP: only one thread";
   const double dx = 7.7e-6;
-  const FluidParticles f = random_fluid(9, dx, 5);
-  const CubicSplineKernel kernel(1.3 * dx);
-  const EquationOfState eos{2e5, 20e6, 1000, 7};
-  NeighbourLists lists(0.2 * dx);
-  lists.update(f.x, Eigen::Matrix3Xd(3, 0), kernel.support(), 0.0);
+  const ListedFluid fluid(9, dx, 5);
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
   FluidRates one, three, three_again;
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 1, one);
   fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, 0.1, 3, three);
