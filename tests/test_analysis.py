@@ -308,6 +308,36 @@ def test_convergence_verdicts_say_no_and_incomplete(config):
     assert np.isnan(convergence.observed_order(100, 110, 99, 1.41, 1.41))  # no monotone shrinking: no order
 
 
+def test_convergence_verdict_names_the_metric_past_its_limit(config):
+    """F / (p A_c) must hold to 5 %, the stresses to 10 %: a load partition moving 8 % fails alone."""
+    summary = convergence_summary(lambda h: 100.0)
+    summary["load_F_over_pA"] = [2.0, 2.0, 2.16]
+    verdict = convergence.verdicts(config, convergence.study_table(config, "convergence_resolution", summary))
+    assert list(verdict["converged"]) == ["no"]
+    assert verdict["between the two finest"].iloc[0] == "F / (p A_c), strain 0.05-0.15 +8.0 % (limit 5 %)"
+
+
+def test_a_single_valued_axis_fixes_a_setting_and_a_sweep_has_no_criterion(config):
+    assert convergence.refined_axis(config, "pressure_resolution") == "resolution"  # smoothing, dt: one value each
+    assert convergence.refined_axis(config, "bulk_modulus") == "K_MPa"
+    rows = [{"case": f"K{k}", "studies": "bulk_modulus", "dryness": 1.0, "coupling": "pressure", "K_MPa": k,
+             "cell.n_fluid": 3082, "cell.n_wall": 2067, "time.dt_ns": 0.5, "smoothed_stress_kPa_at_0.05": 50.0,
+             "smoothed_stress_kPa_at_0.10": 300 - 2000 / k, "peak_force_top_uN": 1.0, "dried_V_over_V0": 1.0,
+             "load_F_over_pA": 2.0, "load_fluid_share": 0.5} for k in (10, 20, 40, 80)]
+    table = convergence.study_table(config, "bulk_modulus", pd.DataFrame(rows))
+    assert list(table["K_MPa"]) == [10, 20, 40, 80]
+    assert list(convergence.verdicts(config, table)["converged"]) == [""]  # a sweep: no criterion
+    note = convergence.bulk_modulus_note(table)[0]  # stress = s + a/K through the two stiffest: s = 300
+    assert "s = 300 kPa" in note and "(the paper's 20 MPa: -33 %)" in note
+
+
+def test_anchor_runs_are_the_anchor_studies_and_the_ladders_fresh_cells(config):
+    runs = convergence.anchor_runs(config, matrix.expand(config))
+    kinds = {kind: sorted(level for k, _, level in runs if k == kind) for kind in ("breathing", "laplace", "membrane")}
+    assert kinds == {"breathing": [1, 2, 3], "laplace": [1, 1, 2, 2, 3], "membrane": [1, 2, 3]}
+    assert all("kwc0" in case and "v0.25" in case for kind, case, _ in runs if kind == "membrane")
+
+
 def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
     cases = matrix.expand(config)
     tissue = matrix.target_cases(config, cases, "tissue")
