@@ -95,7 +95,12 @@ void run_case(Params p, const RunOptions& options) {
   std::vector<Record> records;
   DryingSummary drying;
   const std::int64_t drying_steps = options.from_path.empty() || from_rest ? *p.drying_steps : 0;
-  const auto strain_reached = [&](const Record*) { return p.end_strain && sim.nominal_strain() >= *p.end_strain; };
+  // Compression ends at compression.end_strain, or, unloading, when the cell leaves the top plate.
+  const auto strain_reached = [&](const Record*) {
+    const Plates& plates = sim.state().plates;
+    if (plates.unloading) return plates.force_top_N <= 0;
+    return p.end_strain && sim.nominal_strain() >= *p.end_strain;
+  };
   const SteadyStateCriterion steady = steady_state_criterion(p);
   const auto steady_reached = [&](const Record* recorded) {
     if (!recorded || !is_steady(records, steady)) return false;

@@ -55,6 +55,8 @@ struct Params {
   double bending_stiffness_J = 0;       // k_b, Eq 20
   double contraction_stiffness_N_m = 0; // k_wc, Eq 21
   double contraction_ratio = 0;         // c = a/b, Eq 21
+  std::optional<double> yield_stress_Pa;  // the elastic-plastic wall's sigma_y (none: elastic; wall_plasticity.hpp)
+  double hardening_Pa = 0;              // its hardening modulus H
 
   // wall-fluid coupling: the paper's Lennard-Jones (Eqs 12-13, 17-19) or the fluid's pressure (model.md §4)
   Choice coupling_model = kLennardJones;
@@ -89,6 +91,8 @@ struct Params {
   double plate_length_m = 0;            // footprint in x
   double plate_width_m = 0;             // footprint in y
   std::optional<double> end_strain;     // stop compression at this nominal strain
+  std::optional<double> unload_at_strain;  // load-unload: the top plate turns back at this nominal strain
+  std::optional<double> unload_speed_m_s;  // its upward speed (auto: plate_speed_m_s)
   std::optional<double> volume_closure_time_s;  // relaxation time of the volume closure (0: off; auto: by coupling)
 
   // time integration, model.md §7

@@ -37,6 +37,10 @@ struct Plates {
   double contact_height_m = 0;    // H_c: cell height when compression starts
   double footprint_m2 = 0;        // area of the wall's outline seen from above when compression starts
   double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
+  // Load-unload (compression.unload_at_strain): from unload_start_time_s on, the top plate moves back up.
+  bool unloading = false;
+  double unload_start_time_s = 0, unload_start_z_m = 0;
+  double top_speed_m_s = 0;       // the top plate's speed of the moment, downward positive
 };
 
 // The energy account's running integrals since t = 0 (engine/energy_account.hpp), kept with the state so
@@ -52,6 +56,7 @@ struct EnergyFlows {
   double density_diffusion_J = 0;  // put into the internal energy by delta-SPH (fluid.density_diffusion)
   double backstop_work_J = 0;  // done by the pressure coupling's backstop (coupling.backstop_range_over_dx)
   double volume_closure_J = 0;  // changed by the volume closure's density scaling (compression only)
+  double plastic_loss_J = 0;    // dissipated by the wall's plastic flow (positive; wall_plasticity.hpp)
 };
 
 struct State {
@@ -61,6 +66,7 @@ struct State {
   std::vector<double> start_volume_ratio;  // per cell: sum(m/rho) / enclosed volume when compression started
   std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
   std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
+  std::vector<double> bond_rest_length_m;  // per wall bond: its rest length l_p, the mesh's l0 until it yields
   Stage stage = Stage::Drying;
   std::int64_t step = 0;          // steps done in the whole run
   std::int64_t stage_step = 0;    // steps done in the current stage

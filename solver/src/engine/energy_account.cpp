@@ -13,7 +13,7 @@ StoredEnergy stored_energy(const State& s, const EnergyModel& model) {
     e.internal_J += f.m[i] * model.eos.internal_energy_J_kg(f.rho[i]);
   }
   e.kinetic_J += 0.5 * s.wall.mass_kg * s.wall.v.colwise().squaredNorm().sum();
-  const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp);
+  const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp, s.bond_rest_length_m);
   e.wall_stiff_J = bonds.stiff_J;
   e.wall_contraction_J = bonds.contraction_J;
   e.wall_bending_J = model.bending.energy(s.wall.x);
@@ -78,7 +78,7 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
   const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
                         flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J +
-                        flows.volume_closure_J;
+                        flows.volume_closure_J - flows.plastic_loss_J;
   return now.total_J() - flows.initial_J - put_in;
 }
 

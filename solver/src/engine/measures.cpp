@@ -129,9 +129,15 @@ const std::vector<Quantity>& quantities() {
       {"volume_closure_energy_J", "J",
        "internal energy the volume closure's density scaling added since t = 0 (compression only)",
        &Record::volume_closure_energy_J},
+      {"plastic_loss_J", "J", "energy the wall's plastic flow dissipated since t = 0 (0 for an elastic wall)",
+       &Record::plastic_loss_J},
+      {"wall_plastic_strain_mean", "1", "mean over the wall bonds of the plastic strain ln(l_p / l0) (0 if elastic)",
+       &Record::wall_plastic_strain_mean},
+      {"wall_plastic_strain_max", "1", "largest plastic strain ln(l_p / l0) of a wall bond (0 if elastic)",
+       &Record::wall_plastic_strain_max},
       {"energy_residual_J", "J",
        "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
-       "diffusion + backstop work + volume closure): the error of the energy account",
+       "diffusion + backstop work + volume closure - plastic loss): the error of the energy account",
        &Record::energy_residual_J},
   };
   return q;
@@ -165,6 +171,7 @@ void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Re
   r.density_diffusion_energy_J = flows.density_diffusion_J;
   r.backstop_work_J = flows.backstop_work_J;
   r.volume_closure_energy_J = flows.volume_closure_J;
+  r.plastic_loss_J = flows.plastic_loss_J;
   r.energy_residual_J = energy_residual_J(stored, flows);
 }
 
@@ -197,6 +204,12 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
     const double l = (w.x.col(mesh.bonds[b][0]) - w.x.col(mesh.bonds[b][1])).norm();
     strain_sum += (l - mesh.rest_length_m[b]) / mesh.rest_length_m[b];
+  }
+  r.wall_plastic_strain_mean = r.wall_plastic_strain_max = 0;
+  for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
+    const double plastic = std::log(s.bond_rest_length_m[b] / mesh.rest_length_m[b]);
+    r.wall_plastic_strain_mean += plastic / static_cast<double>(mesh.bonds.size());
+    r.wall_plastic_strain_max = std::max(r.wall_plastic_strain_max, plastic);
   }
   r.wall_tension_N_m = s.wall_tension_N_m;
   r.wall_pressure_Pa = s.wall_pressure_Pa;

@@ -198,7 +198,8 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_(plate_law(p)),
-      bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m},
+      bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m,
+                {p.yield_stress_Pa.value_or(0.0), p.hardening_Pa}},
       drift_density_(p.density_update == kDensityDrift),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = tissue.fluid_x;
@@ -210,6 +211,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
   s_.wall.mass_kg = tissue.wall_mass_kg;
   s_.lamella_intact.assign(lamella_.size(), 1);
   s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
+  s_.bond_rest_length_m = mesh_.rest_length_m;
   if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
@@ -265,6 +267,7 @@ void Simulation::step() {
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) apply_pressure_closure();
   if (s_.stage == Stage::Compression) apply_volume_closure();
+  start_unloading_when_due();
   ++s_.step;
   ++s_.stage_step;
   check_state();
@@ -365,7 +368,9 @@ void Simulation::mass_transfer() {
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
   const BondSums bonds =
-      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, wall_force_, bond_scratch_);
+      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, s_.bond_rest_length_m, wall_force_,
+                      bond_scratch_);
+  s_.energy.plastic_loss_J += bonds.plastic_loss_J;  // at fixed positions: a jump, not a rate
   s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
   energy_rates_.damping_loss_W = bonds.damping_loss_W;
   // The drying ramp moves P_T and L_ref (drying.hpp): the stored energy changes at fixed particles.
@@ -440,7 +445,7 @@ void Simulation::plate_terms() {
   energy_rates_.plate_W = 0;
   if (!plates.active) return;
   add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
-  energy_rates_.plate_W = plates.force_top_N * p_.plate_speed_m_s;  // the wall pushes up, the plate moves down
+  energy_rates_.plate_W = plates.force_top_N * plates.top_speed_m_s;  // the wall pushes up, the plate moves down
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
@@ -466,7 +471,20 @@ void Simulation::drift(double dt) {
   moved_since_lists_m_ += dt * std::sqrt(std::max(fluid_v2, wall_v2));
   s_.time_s += dt;
   Plates& plates = s_.plates;
-  if (plates.active) plates.top_z_m = plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
+  if (!plates.active) return;
+  plates.top_z_m = plates.unloading
+                       ? plates.unload_start_z_m + *p_.unload_speed_m_s * (s_.time_s - plates.unload_start_time_s)
+                       : plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
+}
+
+// compression.unload_at_strain: once the cell reaches it, the top plate turns and moves back up.
+void Simulation::start_unloading_when_due() {
+  Plates& plates = s_.plates;
+  if (!plates.active || plates.unloading || !p_.unload_at_strain || nominal_strain() < *p_.unload_at_strain) return;
+  plates.unloading = true;
+  plates.unload_start_time_s = s_.time_s;
+  plates.unload_start_z_m = plates.top_z_m;
+  plates.top_speed_m_s = -*p_.unload_speed_m_s;
 }
 
 // The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
@@ -638,6 +656,8 @@ void Simulation::start_compression() {
   plates.contact_height_m = cell_height_m(s_.wall.x);
   plates.footprint_m2 = convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");
+  plates.top_speed_m_s = p_.plate_speed_m_s;
+  plates.unloading = false;
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
   compute_rates();
@@ -652,7 +672,12 @@ void Simulation::restore(const State& saved) {
                      std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
                      std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
                      std::to_string(s_.lamella_intact.size()));
+  const std::vector<double> fabricated = s_.bond_rest_length_m;
   s_ = saved;
+  if (s_.bond_rest_length_m.empty()) s_.bond_rest_length_m = fabricated;  // saved before the wall could yield
+  if (s_.bond_rest_length_m.size() != fabricated.size())
+    throw InputError("saved state has " + std::to_string(saved.bond_rest_length_m.size()) +
+                     " wall bonds; the case builds " + std::to_string(fabricated.size()));
   neighbours_.invalidate();
   compute_rates();
 }

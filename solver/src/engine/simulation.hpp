@@ -95,6 +95,7 @@ class Simulation {
   void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
+  void start_unloading_when_due();
   void apply_pressure_closure();
   void apply_volume_closure();
   std::vector<double> cell_volume_ratios() const;  // per cell: sum(m/rho) / enclosed volume

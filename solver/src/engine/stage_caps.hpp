@@ -3,6 +3,9 @@
 // case run at another time step (a resolution level, a time-step study) needs no caps of its own.
 #include <cmath>
 
+#include <sstream>
+
+#include "core/errors.hpp"
 #include "core/params.hpp"
 
 namespace cellsim {
@@ -10,10 +13,25 @@ namespace cellsim {
 inline constexpr double kDryingCapTime_s = 80e-6;       // the paper's 80 000 steps of 1 ns
 inline constexpr double kCompressionCapTime_s = 25e-6;  // 25 000 steps of 1 ns: strain 0.15 at 1 m/s
 
-// Fills in the caps a case leaves to auto: the duration over time.dt_ns, rounded.
+// Fills in the caps a case leaves to auto: the duration over time.dt_ns, rounded. A load-unload
+// (compression.unload_at_strain) adds the way back: the loading's time x plate speed / unload speed.
 inline void resolve_stage_caps(Params& p) {
   if (!p.drying_steps) p.drying_steps = std::llround(kDryingCapTime_s / p.dt_s);
-  if (!p.compression_steps) p.compression_steps = std::llround(kCompressionCapTime_s / p.dt_s);
+  const double unload_share = p.unload_at_strain ? p.plate_speed_m_s / *p.unload_speed_m_s : 0.0;
+  if (!p.compression_steps) p.compression_steps = std::llround(kCompressionCapTime_s * (1.0 + unload_share) / p.dt_s);
+}
+
+// compression.unload_speed_m_s defaults to the loading speed; a plate that turns back must turn before
+// compression.end_strain stops the run.
+inline void resolve_unloading(Params& p) {
+  if (!p.unload_speed_m_s) p.unload_speed_m_s = p.plate_speed_m_s;
+  if (p.unload_at_strain && p.end_strain && *p.unload_at_strain >= *p.end_strain) {
+    std::ostringstream msg;
+    msg << "compression.unload_at_strain = " << *p.unload_at_strain << ": the plate must turn before "
+        << "compression.end_strain = " << *p.end_strain << " stops the compression (give a smaller value, or a "
+        << "larger end_strain)";
+    throw InputError(msg.str());
+  }
 }
 
 }  // namespace cellsim

@@ -212,6 +212,7 @@ Params validate_case(const json& doc) {
   }
   resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
   resolve_density_update(p);
+  resolve_unloading(p);
   resolve_stage_caps(p);
   resolve_volume_closure(p);
   return p;

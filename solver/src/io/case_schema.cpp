@@ -126,6 +126,14 @@ std::vector<ParamSpec> build_specs() {
            "wall contraction force coefficient k_wc", "Eq 21"),
       real("wall.contraction_ratio", "1", 1.0, &P::contraction_ratio, 0.4, 0, true, 1, false,
            "c = a/b: fully dried rest length is l0 (1 - c)", "Eq 21"),
+      derived("wall.yield_stress_MPa", "MPa", 1e6, &P::yield_stress_Pa, 0, false, 1e5, true,
+              "the elastic-plastic wall (ours): a bond whose tension reaches this flow stress over the wall section "
+              "it carries, t0 l0 / sqrt 3, lengthens its rest length (tension only; the set stays)",
+              "docs/model.md §3b, wall_plasticity.hpp", "none: the paper's elastic wall"),
+      real("wall.hardening_MPa", "MPa", 1e6, &P::hardening_Pa, 0, 0, true, 1e6, true,
+           "the elastic-plastic wall's linear hardening: the flow stress grows by this x the plastic strain "
+           "ln(l_p / l0) (0: perfectly plastic; unused without wall.yield_stress_MPa)",
+           "docs/model.md §3b, wall_plasticity.hpp"),
       // coupling
       choice("coupling.model", &P::coupling_model, {"lennard_jones", "pressure"},
              "wall-fluid coupling: lennard_jones (the paper's, Eqs 12-13, 17-19) or pressure (the fluid's SPH "
@@ -195,6 +203,13 @@ std::vector<ParamSpec> build_specs() {
       derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
               "stop compression when the nominal strain reaches this value", "model.md §6",
               "none: run all compression.steps"),
+      derived("compression.unload_at_strain", "1", 1.0, &P::unload_at_strain, 0, false, 1, false,
+              "load-unload: at this nominal strain the top plate turns and moves back up at "
+              "compression.unload_speed_m_s; the stage ends when the cell leaves the top plate (its strain then is "
+              "the permanent set)", "docs/model.md §6", "none: the plate only loads"),
+      derived("compression.unload_speed_m_s", "m/s", 1.0, &P::unload_speed_m_s, 0, false, 1000, true,
+              "upward speed of the top plate while it unloads", "docs/model.md §6",
+              "compression.plate_speed_m_s"),
       derived("compression.volume_closure_time_us", "us", kMicro, &P::volume_closure_time_s, 0, true, 1e6, true,
               "relaxation time over which a closed cell's fluid volume sum(m/rho) is held to the volume its wall "
               "encloses during compression, at their ratio when it started (0: off)", "docs/model-closures.md",

@@ -34,6 +34,7 @@ constexpr EnergyField kEnergyFields[] = {
     {"energy_drive_J", &EnergyFlows::drive_J},     {"energy_density_diffusion_J", &EnergyFlows::density_diffusion_J},
     {"energy_backstop_work_J", &EnergyFlows::backstop_work_J},
     {"energy_volume_closure_J", &EnergyFlows::volume_closure_J},
+    {"energy_plastic_loss_J", &EnergyFlows::plastic_loss_J},
 };
 
 }  // namespace
@@ -74,6 +75,7 @@ void write_state(hid_t parent, const State& s) {
               {s.lamella_intact.size()});
   if (!s.lamella_peak_opening_m.empty())
     h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
+  h5::write(g.id(), "bond_rest_length", s.bond_rest_length_m, {s.bond_rest_length_m.size()});  // l_p: the plastic set
 }
 
 SavedRun read_saved_run(const std::string& path) {
@@ -106,7 +108,9 @@ SavedRun read_saved_run(const std::string& path) {
     s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
     s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));
     for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
-    for (const auto& field : kEnergyFields) s.energy.*field.member = h5::get_attr_double(g.id(), field.name);
+    for (const auto& field : kEnergyFields)  // a flow added since the file was written started at 0
+      s.energy.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : 0.0;
+    if (h5::exists(g.id(), "bond_rest_length")) s.bond_rest_length_m = h5::read_doubles(g.id(), "bond_rest_length");
     s.wall.x = h5::read_points(g.id(), "wall_positions");
     s.wall.v = h5::read_points(g.id(), "wall_velocities");
     s.fluid.x = h5::read_points(g.id(), "fluid_positions");

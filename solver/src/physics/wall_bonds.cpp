@@ -12,24 +12,49 @@ namespace {
 // The per-block loops are functions of their own, with the scalars as value parameters: inside a
 // lambda that is also handed to other threads they would be re-read after every store.
 
-// Passes 1 and 2 for bonds [begin, end): squared lengths, then tension / length over the flat array
-// (vectorised: it holds the square roots and divisions). Returns the sum of k_wc (l - L_ref) l0.
-double tension_over_length(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                           Eigen::Index begin, Eigen::Index end, double* t_over_l) {
+// What passes 1 and 2 sum over their bonds.
+struct TensionSums {
+  double contraction_times_l0 = 0, plastic_loss_J = 0;
+  TensionSums operator+(const TensionSums& o) const {
+    return {contraction_times_l0 + o.contraction_times_l0, plastic_loss_J + o.plastic_loss_J};
+  }
+};
+
+// A plastic law's return map for bonds [begin, end) at their lengths sqrt(length2[b]): moves rest[b] and
+// returns the energy the bonds lost (wall_plasticity.hpp).
+double yield_bonds(const WallMesh& mesh, const BondLaw& law, double ramp, Eigen::Index begin, Eigen::Index end,
+                   const double* length2, double* rest) {
+  const wall::BondSprings springs{law.G_Pa * law.thickness_m, law.contraction_N_m,
+                                  wall::contraction_rest_length(1.0, law.contraction_ratio, law.dryness, ramp)};
+  double loss = 0;
+  for (Eigen::Index b = begin; b < end; ++b) {
+    const double l = std::sqrt(length2[b]);
+    const double l_p = wall::return_map(law.plastic, springs, law.thickness_m, mesh.rest_length_m[b], rest[b], l);
+    if (l_p == rest[b]) continue;
+    loss += springs.energy(rest[b], l) - springs.energy(l_p, l);
+    rest[b] = l_p;
+  }
+  return loss;
+}
+
+// Passes 1 and 2 for bonds [begin, end): squared lengths, (the return map of a plastic law,) then
+// tension / length over the flat array (vectorised: it holds the square roots and divisions).
+TensionSums tension_over_length(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
+                                Eigen::Index begin, Eigen::Index end, double* rest, double* t_over_l) {
   for (Eigen::Index b = begin; b < end; ++b) {
     const auto& bond = mesh.bonds[static_cast<std::size_t>(b)];
     t_over_l[b] = (w.x.col(bond[1]) - w.x.col(bond[0])).squaredNorm();
   }
-  const double* rest = mesh.rest_length_m.data();
-  double contraction_times_l0 = 0;
+  TensionSums sums;
+  if (law.plastic.active()) sums.plastic_loss_J = yield_bonds(mesh, law, ramp, begin, end, t_over_l, rest);
   for (Eigen::Index b = begin; b < end; ++b) {
     const double l = std::sqrt(t_over_l[b]);
     const double l_ref = wall::contraction_rest_length(rest[b], law.contraction_ratio, law.dryness, ramp);
     const double contraction = wall::contraction_tension(law.contraction_N_m, l, l_ref);
     t_over_l[b] = (wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l) + contraction) / l;
-    contraction_times_l0 += contraction * rest[b];
+    sums.contraction_times_l0 += contraction * rest[b];
   }
-  return contraction_times_l0;
+  return sums;
 }
 
 // Pass 3: the forces of the span's bonds on the ends it owns; returns the tension x length of the
@@ -66,14 +91,17 @@ double bonds_damping_loss_W(const WallParticles& w, const WallMesh& mesh, double
 }  // namespace
 
 BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                         Eigen::Matrix3Xd& force, BondScratch& scratch) {
+                         std::vector<double>& rest_length_m, Eigen::Matrix3Xd& force, BondScratch& scratch) {
   const auto n_bonds = static_cast<Eigen::Index>(mesh.bonds.size());
   scratch.tension_over_length.resize(n_bonds);
   double* t_over_l = scratch.tension_over_length.data();
-  const double contraction_times_l0 = reduce_blocks<double>(
+  double* rest = rest_length_m.data();
+  const TensionSums sums = reduce_blocks<TensionSums>(
       threads, n_bonds,
-      [&](Eigen::Index begin, Eigen::Index end) { return tension_over_length(w, mesh, law, ramp, begin, end, t_over_l); },
-      [](double a, double b) { return a + b; });
+      [&](Eigen::Index begin, Eigen::Index end) {
+        return tension_over_length(w, mesh, law, ramp, begin, end, rest, t_over_l);
+      },
+      [](const TensionSums& a, const TensionSums& b) { return a + b; });
   auto& parts = scratch.tension_times_length;  // per thread, added in order
   parts.assign(static_cast<std::size_t>(threads), 0.0);
   const auto& spans = scratch.spans.for_threads(threads, static_cast<int>(w.size()), n_bonds, [&](Eigen::Index b) {
@@ -84,7 +112,8 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
         span, [&](auto all) { return apply_bonds(all, w, mesh, law.damping_N_s_m, t_over_l, span, force); });
   });
   BondSums total;
-  total.contraction_times_l0_N_m = contraction_times_l0;
+  total.contraction_times_l0_N_m = sums.contraction_times_l0;
+  total.plastic_loss_J = sums.plastic_loss_J;
   for (double part : parts) total.tension_times_length += part;
   total.damping_loss_W = reduce_blocks<double>(
       threads, n_bonds,
@@ -93,10 +122,11 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
   return total;
 }
 
-BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp) {
+BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
+                       const std::vector<double>& rest_length_m) {
   BondEnergy e;
   for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
-    const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm(), l0 = mesh.rest_length_m[b];
+    const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm(), l0 = rest_length_m[b];
     const double l_ref = wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp);
     e.stiff_J += wall::stiff_energy(law.G_Pa, law.thickness_m, l0, l);
     e.contraction_J += wall::contraction_energy(law.contraction_N_m, l, l_ref);

@@ -9,6 +9,7 @@
 
 #include "core/state.hpp"
 #include "geometry/wall_mesh.hpp"
+#include "physics/wall_plasticity.hpp"
 
 namespace cellsim {
 
@@ -18,6 +19,7 @@ struct BondLaw {
   double contraction_ratio;        // c = a/b, Eq 21
   double dryness;                  // X/X0
   double damping_N_s_m;            // gamma, Eq 16
+  wall::PlasticLaw plastic;        // the elastic-plastic wall (wall_plasticity.hpp); inactive by default
 };
 
 // What add_bond_forces sums up besides the forces.
@@ -27,6 +29,7 @@ struct BondSums {
   // Sum of k_wc (l - L_ref) l0: the drying ramp's power is this x c (1 - X) d(ramp)/dt (L_ref =
   // l0 [1 - c (1 - X) ramp] shortens, and each spring's energy changes by -k_wc (l - L_ref) dL_ref).
   double contraction_times_l0_N_m = 0;
+  double plastic_loss_J = 0;  // the energy the bonds that yielded at these positions dissipated (wall_plasticity.hpp)
 };
 
 // Kept by the caller between steps, so that no step allocates.
@@ -36,14 +39,17 @@ struct BondScratch {
   OwnedSpans spans;                           // the bonds of each thread's particles (owned_spans.hpp)
 };
 
-// Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5).
+// Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5). rest_length_m:
+// each bond's rest length l_p (the mesh's l0 until it yields); a plastic law moves it at these positions
+// before the forces (the return map of wall_plasticity.hpp).
 BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                         Eigen::Matrix3Xd& force, BondScratch& scratch);
+                         std::vector<double>& rest_length_m, Eigen::Matrix3Xd& force, BondScratch& scratch);
 
 // The energy stored in the bonds (the energy account): Eq 15's stiff springs and Eq 21's contraction springs.
 struct BondEnergy {
   double stiff_J = 0, contraction_J = 0;
 };
-BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp);
+BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
+                       const std::vector<double>& rest_length_m);
 
 }  // namespace cellsim
