@@ -57,9 +57,10 @@ WallLoops wall_loops(const ShakenCell& s, int threads) {
   out.volume_m3 = surface.volume_m3;
   BondScratch scratch;
   out.bonds = Eigen::Matrix3Xd::Zero(3, s.wall.size());
-  std::vector<double> rest = s.cell.mesh.rest_length_m;
-  out.tension_times_length =
-      add_bond_forces(s.wall, s.cell.mesh, s.bond_law(), 0.7, threads, rest, out.bonds, scratch).tension_times_length;
+  std::vector<double> plastic_elongation(s.cell.mesh.bonds.size(), 0.0);
+  out.tension_times_length = add_bond_forces(s.wall, s.cell.mesh, s.bond_law(), 0.7, threads, plastic_elongation,
+                                             out.bonds, scratch)
+                                 .tension_times_length;
   out.bending = Eigen::Matrix3Xd::Zero(3, s.wall.size());
   Bending(s.cell.mesh, s.p.bending_stiffness_J).add_forces(s.wall.x, surface.triangles, threads, out.bending);
   return out;

@@ -66,7 +66,7 @@ struct State {
   std::vector<double> start_volume_ratio;  // per cell: sum(m/rho) / enclosed volume when compression started
   std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
   std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
-  std::vector<double> bond_rest_length_m;  // per wall bond: its rest length l_p, the mesh's l0 until it yields
+  std::vector<double> bond_plastic_elongation_m;  // per wall bond: its plastic slider's elongation (wall_plasticity.hpp)
   Stage stage = Stage::Drying;
   std::int64_t step = 0;          // steps done in the whole run
   std::int64_t stage_step = 0;    // steps done in the current stage

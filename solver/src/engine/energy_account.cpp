@@ -13,7 +13,7 @@ StoredEnergy stored_energy(const State& s, const EnergyModel& model) {
     e.internal_J += f.m[i] * model.eos.internal_energy_J_kg(f.rho[i]);
   }
   e.kinetic_J += 0.5 * s.wall.mass_kg * s.wall.v.colwise().squaredNorm().sum();
-  const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp, s.bond_rest_length_m);
+  const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp, s.bond_plastic_elongation_m);
   e.wall_stiff_J = bonds.stiff_J;
   e.wall_contraction_J = bonds.contraction_J;
   e.wall_bending_J = model.bending.energy(s.wall.x);

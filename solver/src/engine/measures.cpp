@@ -131,9 +131,9 @@ const std::vector<Quantity>& quantities() {
        &Record::volume_closure_energy_J},
       {"plastic_loss_J", "J", "energy the wall's plastic flow dissipated since t = 0 (0 for an elastic wall)",
        &Record::plastic_loss_J},
-      {"wall_plastic_strain_mean", "1", "mean over the wall bonds of the plastic strain ln(l_p / l0) (0 if elastic)",
+      {"wall_plastic_strain_mean", "1", "mean over the wall bonds of the plastic strain delta_p / l0, the slider's elongation (0 if elastic)",
        &Record::wall_plastic_strain_mean},
-      {"wall_plastic_strain_max", "1", "largest plastic strain ln(l_p / l0) of a wall bond (0 if elastic)",
+      {"wall_plastic_strain_max", "1", "largest plastic strain delta_p / l0 of a wall bond (0 if elastic)",
        &Record::wall_plastic_strain_max},
       {"energy_residual_J", "J",
        "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
@@ -207,7 +207,7 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   }
   r.wall_plastic_strain_mean = r.wall_plastic_strain_max = 0;
   for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
-    const double plastic = std::log(s.bond_rest_length_m[b] / mesh.rest_length_m[b]);
+    const double plastic = s.bond_plastic_elongation_m[b] / mesh.rest_length_m[b];
     r.wall_plastic_strain_mean += plastic / static_cast<double>(mesh.bonds.size());
     r.wall_plastic_strain_max = std::max(r.wall_plastic_strain_max, plastic);
   }

@@ -32,7 +32,7 @@ struct Record {
   double coupling_energy_J, plate_energy_J, stored_energy_J;
   double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
   double density_diffusion_energy_J, backstop_work_J, volume_closure_energy_J, plastic_loss_J;
-  double wall_plastic_strain_mean, wall_plastic_strain_max;  // ln(l_p / l0) over the bonds (wall_plasticity.hpp)
+  double wall_plastic_strain_mean, wall_plastic_strain_max;  // delta_p / l0 over the bonds (wall_plasticity.hpp)
   double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
   std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;

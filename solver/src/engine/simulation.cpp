@@ -211,7 +211,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
   s_.wall.mass_kg = tissue.wall_mass_kg;
   s_.lamella_intact.assign(lamella_.size(), 1);
   s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
-  s_.bond_rest_length_m = mesh_.rest_length_m;
+  s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
   if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
@@ -368,7 +368,7 @@ void Simulation::mass_transfer() {
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
 void Simulation::wall_terms() {
   const BondSums bonds =
-      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, s_.bond_rest_length_m, wall_force_,
+      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, s_.bond_plastic_elongation_m, wall_force_,
                       bond_scratch_);
   s_.energy.plastic_loss_J += bonds.plastic_loss_J;  // at fixed positions: a jump, not a rate
   s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
@@ -672,12 +672,12 @@ void Simulation::restore(const State& saved) {
                      std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
                      std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
                      std::to_string(s_.lamella_intact.size()));
-  const std::vector<double> fabricated = s_.bond_rest_length_m;
   s_ = saved;
-  if (s_.bond_rest_length_m.empty()) s_.bond_rest_length_m = fabricated;  // saved before the wall could yield
-  if (s_.bond_rest_length_m.size() != fabricated.size())
-    throw InputError("saved state has " + std::to_string(saved.bond_rest_length_m.size()) +
-                     " wall bonds; the case builds " + std::to_string(fabricated.size()));
+  if (s_.bond_plastic_elongation_m.empty())  // saved before the wall could yield
+    s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
+  if (s_.bond_plastic_elongation_m.size() != mesh_.bonds.size())
+    throw InputError("saved state has " + std::to_string(saved.bond_plastic_elongation_m.size()) +
+                     " wall bonds; the case builds " + std::to_string(mesh_.bonds.size()));
   neighbours_.invalidate();
   compute_rates();
 }

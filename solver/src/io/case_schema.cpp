@@ -128,11 +128,12 @@ std::vector<ParamSpec> build_specs() {
            "c = a/b: fully dried rest length is l0 (1 - c)", "Eq 21"),
       derived("wall.yield_stress_MPa", "MPa", 1e6, &P::yield_stress_Pa, 0, false, 1e5, true,
               "the elastic-plastic wall (ours): a bond whose tension reaches this flow stress over the wall section "
-              "it carries, t0 l0 / sqrt 3, lengthens its rest length (tension only; the set stays)",
+              "it carries, t0 l0 / sqrt 3, lengthens a plastic slider in series with its springs (tension only; "
+              "the set stays)",
               "docs/model.md §3b, wall_plasticity.hpp", "none: the paper's elastic wall"),
       real("wall.hardening_MPa", "MPa", 1e6, &P::hardening_Pa, 0, 0, true, 1e6, true,
            "the elastic-plastic wall's linear hardening: the flow stress grows by this x the plastic strain "
-           "ln(l_p / l0) (0: perfectly plastic; unused without wall.yield_stress_MPa)",
+           "delta_p / l0 (0: perfectly plastic; unused without wall.yield_stress_MPa)",
            "docs/model.md §3b, wall_plasticity.hpp"),
       // coupling
       choice("coupling.model", &P::coupling_model, {"lennard_jones", "pressure"},

@@ -20,38 +20,40 @@ struct TensionSums {
   }
 };
 
-// A plastic law's return map for bonds [begin, end) at their lengths sqrt(length2[b]): moves rest[b] and
-// returns the energy the bonds lost (wall_plasticity.hpp).
+// A plastic law's return map for bonds [begin, end) at their lengths sqrt(length2[b]): lengthens their
+// sliders delta_p[b] and returns the energy the springs lost to them (wall_plasticity.hpp).
 double yield_bonds(const WallMesh& mesh, const BondLaw& law, double ramp, Eigen::Index begin, Eigen::Index end,
-                   const double* length2, double* rest) {
-  const wall::BondSprings springs{law.G_Pa * law.thickness_m, law.contraction_N_m,
-                                  wall::contraction_rest_length(1.0, law.contraction_ratio, law.dryness, ramp)};
+                   const double* length2, double* delta_p) {
   double loss = 0;
   for (Eigen::Index b = begin; b < end; ++b) {
-    const double l = std::sqrt(length2[b]);
-    const double l_p = wall::return_map(law.plastic, springs, law.thickness_m, mesh.rest_length_m[b], rest[b], l);
-    if (l_p == rest[b]) continue;
-    loss += springs.energy(rest[b], l) - springs.energy(l_p, l);
-    rest[b] = l_p;
+    const double l = std::sqrt(length2[b]), l0 = mesh.rest_length_m[b];
+    const wall::BondSprings springs{law.G_Pa * law.thickness_m, law.contraction_N_m, l0,
+                                    wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp)};
+    const double flowed = wall::return_map(law.plastic, springs, law.thickness_m, delta_p[b], l);
+    if (flowed == delta_p[b]) continue;
+    loss += springs.energy(l - delta_p[b]) - springs.energy(l - flowed);
+    delta_p[b] = flowed;
   }
   return loss;
 }
 
 // Passes 1 and 2 for bonds [begin, end): squared lengths, (the return map of a plastic law,) then
-// tension / length over the flat array (vectorised: it holds the square roots and divisions).
+// tension / length over the flat array (vectorised: it holds the square roots and divisions). The
+// springs stretch by the bond's length less its slider's elongation delta_p.
 TensionSums tension_over_length(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                                Eigen::Index begin, Eigen::Index end, double* rest, double* t_over_l) {
+                                Eigen::Index begin, Eigen::Index end, double* delta_p, double* t_over_l) {
   for (Eigen::Index b = begin; b < end; ++b) {
     const auto& bond = mesh.bonds[static_cast<std::size_t>(b)];
     t_over_l[b] = (w.x.col(bond[1]) - w.x.col(bond[0])).squaredNorm();
   }
   TensionSums sums;
-  if (law.plastic.active()) sums.plastic_loss_J = yield_bonds(mesh, law, ramp, begin, end, t_over_l, rest);
+  if (law.plastic.active()) sums.plastic_loss_J = yield_bonds(mesh, law, ramp, begin, end, t_over_l, delta_p);
+  const double* rest = mesh.rest_length_m.data();
   for (Eigen::Index b = begin; b < end; ++b) {
-    const double l = std::sqrt(t_over_l[b]);
+    const double l = std::sqrt(t_over_l[b]), l_e = l - delta_p[b];
     const double l_ref = wall::contraction_rest_length(rest[b], law.contraction_ratio, law.dryness, ramp);
-    const double contraction = wall::contraction_tension(law.contraction_N_m, l, l_ref);
-    t_over_l[b] = (wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l) + contraction) / l;
+    const double contraction = wall::contraction_tension(law.contraction_N_m, l_e, l_ref);
+    t_over_l[b] = (wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l_e) + contraction) / l;
     sums.contraction_times_l0 += contraction * rest[b];
   }
   return sums;
@@ -91,15 +93,15 @@ double bonds_damping_loss_W(const WallParticles& w, const WallMesh& mesh, double
 }  // namespace
 
 BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                         std::vector<double>& rest_length_m, Eigen::Matrix3Xd& force, BondScratch& scratch) {
+                         std::vector<double>& plastic_elongation_m, Eigen::Matrix3Xd& force, BondScratch& scratch) {
   const auto n_bonds = static_cast<Eigen::Index>(mesh.bonds.size());
   scratch.tension_over_length.resize(n_bonds);
   double* t_over_l = scratch.tension_over_length.data();
-  double* rest = rest_length_m.data();
+  double* delta_p = plastic_elongation_m.data();
   const TensionSums sums = reduce_blocks<TensionSums>(
       threads, n_bonds,
       [&](Eigen::Index begin, Eigen::Index end) {
-        return tension_over_length(w, mesh, law, ramp, begin, end, rest, t_over_l);
+        return tension_over_length(w, mesh, law, ramp, begin, end, delta_p, t_over_l);
       },
       [](const TensionSums& a, const TensionSums& b) { return a + b; });
   auto& parts = scratch.tension_times_length;  // per thread, added in order
@@ -123,10 +125,11 @@ BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const Bon
 }
 
 BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                       const std::vector<double>& rest_length_m) {
+                       const std::vector<double>& plastic_elongation_m) {
   BondEnergy e;
   for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {
-    const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm(), l0 = rest_length_m[b];
+    const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm() - plastic_elongation_m[b];
+    const double l0 = mesh.rest_length_m[b];
     const double l_ref = wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp);
     e.stiff_J += wall::stiff_energy(law.G_Pa, law.thickness_m, l0, l);
     e.contraction_J += wall::contraction_energy(law.contraction_N_m, l, l_ref);

@@ -39,17 +39,17 @@ struct BondScratch {
   OwnedSpans spans;                           // the bonds of each thread's particles (owned_spans.hpp)
 };
 
-// Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5). rest_length_m:
-// each bond's rest length l_p (the mesh's l0 until it yields); a plastic law moves it at these positions
-// before the forces (the return map of wall_plasticity.hpp).
+// Adds to force (3 x N_w); ramp in [0, 1] scales the contraction of L_ref (model.md §5).
+// plastic_elongation_m: each bond's slider delta_p (0 until it yields); a plastic law lengthens it at these
+// positions before the forces (the return map of wall_plasticity.hpp).
 BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
-                         std::vector<double>& rest_length_m, Eigen::Matrix3Xd& force, BondScratch& scratch);
+                         std::vector<double>& plastic_elongation_m, Eigen::Matrix3Xd& force, BondScratch& scratch);
 
 // The energy stored in the bonds (the energy account): Eq 15's stiff springs and Eq 21's contraction springs.
 struct BondEnergy {
   double stiff_J = 0, contraction_J = 0;
 };
 BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp,
-                       const std::vector<double>& rest_length_m);
+                       const std::vector<double>& plastic_elongation_m);
 
 }  // namespace cellsim
