@@ -39,8 +39,14 @@ struct ShakenCell {
       wall.v.col(k) = Eigen::Vector3d(u(rng), u(rng), u(rng));
     }
   }
+  // Half dried, with heterogeneous bonds and a wall that yields (the shaken bonds pass 0.1 MPa): every
+  // branch of the bond loop.
   BondLaw bond_law() const {
-    return {p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, 0.5, p.damping_N_s_m};
+    Params q = p;
+    q.dryness = 0.5;
+    q.yield_stress_Pa = 0.1e6;
+    const PropertyFactors factors = draw_property_factors({7, 0.3, 0.2, 0.0, 5e-6}, wall.x, cell.mesh, {}, 1);
+    return make_bond_law(q, factors);
   }
 };
 

@@ -40,6 +40,12 @@ struct Params {
   double lamella_strength_Pa = 0;       // a bond's peak tension is this x a wall particle's area
   double lamella_fracture_energy_J_m2 = 0;  // energy to separate a bond, per wall area it owns
 
+  // heterogeneous properties (geometry/heterogeneity.hpp): coefficients of variation, 0 for uniform
+  std::int64_t heterogeneity_seed = 1;
+  double G_cv = 0, thickness_cv = 0;    // per wall bond
+  double viscosity_cv = 0;              // per cell
+  double correlation_length_m = 0;      // of the wall's factors (0: each bond its own draw)
+
   // fluid, Table 1
   double viscosity_Pa_s = 0;            // mu, Eq 4
   double bulk_modulus_Pa = 0;           // K, Eq 7

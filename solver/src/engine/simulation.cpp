@@ -48,13 +48,20 @@ LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
   return law;
 }
 
+// The seeded factors of the heterogeneous properties (heterogeneity.hpp), from the tissue as built.
+PropertyFactors property_factors(const Params& p, const Tissue& tissue) {
+  const HeterogeneityLaw law{p.heterogeneity_seed, p.G_cv, p.thickness_cv, p.viscosity_cv, p.correlation_length_m};
+  return draw_property_factors(law, tissue.wall_x, tissue.mesh, tissue.cells.cell_of_wall(), tissue.cells.count());
+}
+
 // Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
-double wall_spring_limit(const WallMesh& mesh, const std::vector<LamellaBond>& lamella, const Params& p,
-                         double wall_mass, long n_wall) {
+double wall_spring_limit(const WallMesh& mesh, const BondLaw& bonds, const std::vector<LamellaBond>& lamella,
+                         const Params& p, double wall_mass, long n_wall) {
   const double contact = lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m;
   std::vector<double> k_sum(static_cast<std::size_t>(n_wall), contact);
-  const double k_bond = p.contraction_stiffness_N_m + 2.0 * p.G_Pa * p.thickness_m / std::sqrt(3.0);
-  for (const auto& b : mesh.bonds) {
+  for (std::size_t i = 0; i < mesh.bonds.size(); ++i) {
+    const auto& b = mesh.bonds[i];
+    const double k_bond = p.contraction_stiffness_N_m + 2.0 * bonds.G_t_N_m[i] / std::sqrt(3.0);
     k_sum[static_cast<std::size_t>(b[0])] += k_bond;
     k_sum[static_cast<std::size_t>(b[1])] += k_bond;
   }
@@ -187,7 +194,9 @@ double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& ver
 
 }  // namespace
 
-Simulation::Simulation(const Params& p, const Tissue& tissue)
+Simulation::Simulation(const Params& p, const Tissue& tissue) : Simulation(p, tissue, property_factors(p, tissue)) {}
+
+Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFactors& factors)
     : p_(p),
       mesh_(tissue.mesh),
       cells_(tissue.cells),
@@ -198,8 +207,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_(plate_law(p)),
-      bond_law_{p.G_Pa, p.thickness_m, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m,
-                {p.yield_stress_Pa.value_or(0.0), p.hardening_Pa}},
+      bond_law_(make_bond_law(p, factors)),
       drift_density_(p.density_update == kDensityDrift),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = tissue.fluid_x;
@@ -212,11 +220,15 @@ Simulation::Simulation(const Params& p, const Tissue& tissue)
   s_.lamella_intact.assign(lamella_.size(), 1);
   s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
   s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
+  if (p.viscosity_cv > 0)  // each cell's fluid its own viscosity (heterogeneity.hpp)
+    for (int c = 0; c < cells_.count(); ++c)
+      fluid_viscosity_Pa_s_.insert(fluid_viscosity_Pa_s_.end(), static_cast<std::size_t>(cells_.fluid_count(c)),
+                                   p.viscosity_Pa_s * factors.viscosity[static_cast<std::size_t>(c)]);
   if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
-  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
+  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
   if (p_.dt_s > wall_spring_dt_limit_s_) {  // known before the first step: bad input, not a blow-up
     std::ostringstream msg;
     msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
@@ -327,7 +339,7 @@ void Simulation::update_neighbours() {
 void Simulation::advance_density(double dt) {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
   const EquationOfState state_eos = eos();
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, continuity_,
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, viscosity(), threads_, continuity_,
                    p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(), PairTerms::Continuity);
   if (p_.coupling_model == kPressure) {
     pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, neighbours_.fluid_wall(), kernel,
@@ -346,7 +358,7 @@ void Simulation::advance_density(double dt) {
 void Simulation::fluid_terms() {
   const CubicSplineKernel kernel(s_.smoothing_length_m);
   const EquationOfState state_eos = eos();
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, p_.viscosity_Pa_s, threads_, fluid_,
+  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, viscosity(), threads_, fluid_,
                    p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(),
                    drift_density_ ? PairTerms::Forces : PairTerms::All);
   energy_rates_.viscous_loss_W = fluid_.viscous_loss_W;
@@ -591,8 +603,10 @@ void Simulation::check_time_step() const {
   const Eigen::Index i_v = fastest.i_v, i_a = fastest.i_a;
   const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
   const double sound_limit = 0.25 * h / (c0 + v_max);
-  const double viscous_limit =
-      p_.viscosity_Pa_s > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / p_.viscosity_Pa_s : INFINITY;
+  const double mu_max = fluid_viscosity_Pa_s_.empty()
+                            ? p_.viscosity_Pa_s
+                            : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
+  const double viscous_limit = mu_max > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / mu_max : INFINITY;
   const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
   const double dt = p_.dt_s;
   const auto fail = [&](double limit, const std::string& what) {

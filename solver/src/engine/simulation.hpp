@@ -12,6 +12,7 @@
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
 #include "geometry/neighbours.hpp"
+#include "geometry/heterogeneity.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
 #include "geometry/wall_mesh.hpp"
@@ -31,6 +32,8 @@ namespace cellsim {
 class Simulation {
  public:
   Simulation(const Params& p, const Tissue& tissue);
+  // With the heterogeneous properties' factors given (the other constructor draws them from p's seed).
+  Simulation(const Params& p, const Tissue& tissue, const PropertyFactors& factors);
 
   void step();                  // one kick-drift-kick step of dt
   void start_compression();     // switches L_p and places the plates (model.md §6)
@@ -46,6 +49,12 @@ class Simulation {
     return s_;
   }
   const WallMesh& mesh() const { return mesh_; }
+  const BondLaw& bond_law() const { return bond_law_; }
+  // Eq 4's viscosity: uniform, or each fluid particle its cell's (heterogeneity.hpp).
+  Viscosity viscosity() const {
+    return fluid_viscosity_Pa_s_.empty() ? Viscosity(p_.viscosity_Pa_s)
+                                         : Viscosity(p_.viscosity_Pa_s, fluid_viscosity_Pa_s_.data());
+  }
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
@@ -120,6 +129,7 @@ class Simulation {
   LennardJones lj_;
   PlateLaw plate_law_;
   BondLaw bond_law_;
+  std::vector<double> fluid_viscosity_Pa_s_;  // per fluid particle, with heterogeneity.fluid_viscosity_cv (else empty)
 
   // Rates at the current positions.
   FluidRates fluid_;

@@ -135,6 +135,22 @@ std::vector<ParamSpec> build_specs() {
            "the elastic-plastic wall's linear hardening: the flow stress grows by this x the plastic strain "
            "delta_p / l0 (0: perfectly plastic; unused without wall.yield_stress_MPa)",
            "docs/model.md §3b, wall_plasticity.hpp"),
+      // heterogeneity (ours): seeded lognormal factors of mean 1
+      integer("heterogeneity.seed", &P::heterogeneity_seed, 1, 0, 2147483647,
+              "seed of the heterogeneous properties' draws (the same seed gives the same bits)",
+              "docs/model.md §3c, heterogeneity.hpp"),
+      real("heterogeneity.wall_G_cv", "1", 1.0, &P::G_cv, 0, 0, true, 3, true,
+           "coefficient of variation of each wall bond's shear modulus G (lognormal, mean G; 0: uniform)",
+           "docs/model.md §3c, Eq 15"),
+      real("heterogeneity.wall_thickness_cv", "1", 1.0, &P::thickness_cv, 0, 0, true, 3, true,
+           "coefficient of variation of each wall bond's thickness t0 (lognormal, mean t0; Eq 15's G t0 and the "
+           "plastic wall's section; 0: uniform)", "docs/model.md §3c, Eq 15"),
+      real("heterogeneity.fluid_viscosity_cv", "1", 1.0, &P::viscosity_cv, 0, 0, true, 3, true,
+           "coefficient of variation of each cell's fluid viscosity mu (lognormal, mean mu; 0: uniform)",
+           "docs/model.md §3c, Eq 4"),
+      real("heterogeneity.correlation_length_um", "um", kMicro, &P::correlation_length_m, 0, 0, true, 1e4, true,
+           "length over which the wall's factors are correlated (a Gaussian-smoothed white noise over each cell's "
+           "wall; 0: each bond its own draw)", "docs/model.md §3c"),
       // coupling
       choice("coupling.model", &P::coupling_model, {"lennard_jones", "pressure"},
              "wall-fluid coupling: lennard_jones (the paper's, Eqs 12-13, 17-19) or pressure (the fluid's SPH "

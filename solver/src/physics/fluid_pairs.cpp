@@ -58,7 +58,7 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
 // kDiffusion: with the delta-SPH density diffusion (a separate loop: without it, nothing changes);
 // kTerms: which terms (PairTerms), each set its own loop.
 template <bool kDiffusion, PairTerms kTerms>
-void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, double viscosity_Pa_s,
+void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, Viscosity viscosity,
                     double diffusion_m2_s, const double* records, int begin, int end, double* sums,
                     double& viscous_loss, double& diffusion_power) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
@@ -67,8 +67,10 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
   const double* position = records + kPosition;
   const double* velocity = records + kVelocity;
   const double* factors = records + kFactors;
-  const double4 mu_sum = simd::broadcast(2.0 * viscosity_Pa_s);  // mu_i + mu_j: one viscosity
+  const double4 uniform_mu_sum = simd::broadcast(2.0 * viscosity.uniform_Pa_s);  // mu_i + mu_j: one viscosity
+  const double* mu = viscosity.per_particle_Pa_s;
   for (int i = begin; i < end; ++i) {
+    const double4 mu_sum = mu ? simd::broadcast(2.0 * mu[i]) : uniform_mu_sum;  // i's and j's cell are one
     const double4 x_i = simd::load(position + kRecord * i), v_i = simd::load(velocity + kRecord * i);
     const double4 mi = simd::broadcast(factors[kRecord * i]), Ai = simd::broadcast(factors[kRecord * i + 1]),
                   Vi = simd::broadcast(factors[kRecord * i + 2]);
@@ -170,7 +172,7 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
-               double viscosity_Pa_s, double diffusion_m2_s, PairTerms terms, int r0, int r1, int written, FluidRates& out,
+               Viscosity viscosity, double diffusion_m2_s, PairTerms terms, int r0, int r1, int written, FluidRates& out,
                Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
@@ -188,7 +190,7 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
     }
     const auto pass = [&](auto diffusion, auto terms) {
       add_pair_terms<decltype(diffusion)::value, decltype(terms)::value>(
-          pairs, kernel, viscosity_Pa_s, diffusion_m2_s, out.records.data(), c0, c1, sums.data(), viscous_loss,
+          pairs, kernel, viscosity, diffusion_m2_s, out.records.data(), c0, c1, sums.data(), viscous_loss,
           diffusion_power);
     };
     using Off = std::false_type;
@@ -234,7 +236,7 @@ void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
 // own sums, added up in block order at the end: the result depends on the block count only, even
 // if the runtime runs the blocks on fewer threads than asked.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
-                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
+                      const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
                       double density_diffusion_m2_s, PairTerms terms) {
   const Eigen::Index n = f.size();
   out.pressure.resize(n);
@@ -276,7 +278,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     if (stride > 1) wait_for_all_threads();  // every record another block reads is written
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
-      add_block(f, pairs, kernel, eos, viscosity_Pa_s, density_diffusion_m2_s, terms, out.first_row[b], out.first_row[b + 1],
+      add_block(f, pairs, kernel, eos, viscosity, density_diffusion_m2_s, terms, out.first_row[b], out.first_row[b + 1],
                 out.written[b], out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
     }
   };

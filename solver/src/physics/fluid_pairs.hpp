@@ -32,6 +32,15 @@ struct FluidRates {
   std::vector<double> block_viscous_loss_W, block_diffusion_W;  // per block, added in block order
 };
 
+// The fluid's viscosity mu (Eq 4): one value, or one per particle (a cell's, heterogeneity.hpp). Fluid
+// pairs never join two cells (neighbours.hpp), so a pair's mu_i + mu_j is 2 mu_i.
+struct Viscosity {
+  Viscosity(double uniform) : uniform_Pa_s(uniform) {}  // NOLINT: a number is a uniform viscosity
+  Viscosity(double uniform, const double* per_particle) : uniform_Pa_s(uniform), per_particle_Pa_s(per_particle) {}
+  double uniform_Pa_s;
+  const double* per_particle_Pa_s = nullptr;  // null: uniform_Pa_s everywhere
+};
+
 // Which terms a pass over the pairs computes: all of them (the density kicked with the velocity, one
 // pass a step), or, with the density advanced in the drift (time.density_update = drift), the
 // continuity terms in one pass (Eq 10, and delta-SPH) and the forces in another (Eqs 3, 4).
@@ -40,7 +49,7 @@ enum class PairTerms { All, Continuity, Forces };
 // Overwrites out (sized to the fluid); the terms a pass leaves out come out as zeros. threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
 // density_diffusion_m2_s: delta h c0 of the delta-SPH density diffusion (sph_terms.hpp), 0 for none.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
-                      const EquationOfState& eos, double viscosity_Pa_s, int threads, FluidRates& out,
+                      const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
                       double density_diffusion_m2_s = 0, PairTerms terms = PairTerms::All);
 
 }  // namespace cellsim

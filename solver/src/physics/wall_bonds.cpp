@@ -27,9 +27,9 @@ double yield_bonds(const WallMesh& mesh, const BondLaw& law, double ramp, Eigen:
   double loss = 0;
   for (Eigen::Index b = begin; b < end; ++b) {
     const double l = std::sqrt(length2[b]), l0 = mesh.rest_length_m[b];
-    const wall::BondSprings springs{law.G_Pa * law.thickness_m, law.contraction_N_m, l0,
+    const wall::BondSprings springs{law.G_t_N_m[b], law.contraction_N_m, l0,
                                     wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp)};
-    const double flowed = wall::return_map(law.plastic, springs, law.thickness_m, delta_p[b], l);
+    const double flowed = wall::return_map(law.plastic, springs, law.thickness_m[b], delta_p[b], l);
     if (flowed == delta_p[b]) continue;
     loss += springs.energy(l - delta_p[b]) - springs.energy(l - flowed);
     delta_p[b] = flowed;
@@ -49,11 +49,12 @@ TensionSums tension_over_length(const WallParticles& w, const WallMesh& mesh, co
   TensionSums sums;
   if (law.plastic.active()) sums.plastic_loss_J = yield_bonds(mesh, law, ramp, begin, end, t_over_l, delta_p);
   const double* rest = mesh.rest_length_m.data();
+  const double* G_t = law.G_t_N_m.data();
   for (Eigen::Index b = begin; b < end; ++b) {
     const double l = std::sqrt(t_over_l[b]), l_e = l - delta_p[b];
     const double l_ref = wall::contraction_rest_length(rest[b], law.contraction_ratio, law.dryness, ramp);
     const double contraction = wall::contraction_tension(law.contraction_N_m, l_e, l_ref);
-    t_over_l[b] = (wall::stiff_tension(law.G_Pa, law.thickness_m, rest[b], l_e) + contraction) / l;
+    t_over_l[b] = (wall::stiff_tension(G_t[b], 1.0, rest[b], l_e) + contraction) / l;
     sums.contraction_times_l0 += contraction * rest[b];
   }
   return sums;
@@ -91,6 +92,16 @@ double bonds_damping_loss_W(const WallParticles& w, const WallMesh& mesh, double
 }
 
 }  // namespace
+
+BondLaw make_bond_law(const Params& p, const PropertyFactors& factors) {
+  BondLaw law{{}, {}, p.contraction_stiffness_N_m, p.contraction_ratio, p.dryness, p.damping_N_s_m,
+              {p.yield_stress_Pa.value_or(0.0), p.hardening_Pa}};
+  for (std::size_t b = 0; b < factors.G.size(); ++b) {
+    law.thickness_m.push_back(p.thickness_m * factors.thickness[b]);
+    law.G_t_N_m.push_back(p.G_Pa * p.thickness_m * factors.G[b] * factors.thickness[b]);
+  }
+  return law;
+}
 
 BondSums add_bond_forces(const WallParticles& w, const WallMesh& mesh, const BondLaw& law, double ramp, int threads,
                          std::vector<double>& plastic_elongation_m, Eigen::Matrix3Xd& force, BondScratch& scratch) {
@@ -131,7 +142,7 @@ BondEnergy bond_energy(const WallParticles& w, const WallMesh& mesh, const BondL
     const double l = (w.x.col(mesh.bonds[b][1]) - w.x.col(mesh.bonds[b][0])).norm() - plastic_elongation_m[b];
     const double l0 = mesh.rest_length_m[b];
     const double l_ref = wall::contraction_rest_length(l0, law.contraction_ratio, law.dryness, ramp);
-    e.stiff_J += wall::stiff_energy(law.G_Pa, law.thickness_m, l0, l);
+    e.stiff_J += wall::stiff_energy(law.G_t_N_m[b], 1.0, l0, l);
     e.contraction_J += wall::contraction_energy(law.contraction_N_m, l, l_ref);
   }
   return e;

@@ -7,20 +7,26 @@
 
 #include "parallel/owned_spans.hpp"
 
+#include "core/params.hpp"
 #include "core/state.hpp"
+#include "geometry/heterogeneity.hpp"
 #include "geometry/wall_mesh.hpp"
 #include "physics/wall_plasticity.hpp"
 
 namespace cellsim {
 
 struct BondLaw {
-  double G_Pa, thickness_m;        // Eq 15
+  std::vector<double> G_t_N_m;     // G t0 of each bond, Eq 15 (times its factors: heterogeneity.hpp)
+  std::vector<double> thickness_m; // t0 of each bond (the plastic wall's section)
   double contraction_N_m;          // k_wc, Eq 21
   double contraction_ratio;        // c = a/b, Eq 21
   double dryness;                  // X/X0
   double damping_N_s_m;            // gamma, Eq 16
   wall::PlasticLaw plastic;        // the elastic-plastic wall (wall_plasticity.hpp); inactive by default
 };
+
+// The law of the mesh's bonds: G, t0 and the rest of p, each bond's G and t0 times its factors.
+BondLaw make_bond_law(const Params& p, const PropertyFactors& factors);
 
 // What add_bond_forces sums up besides the forces.
 struct BondSums {
