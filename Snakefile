@@ -4,6 +4,7 @@
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
 #   snakemake --cores 2 convergence                   resolution and time-step convergence (not default)
 #   snakemake --cores 2 tissue                        tissues of 8 and 27 cells (not default)
+#   snakemake --cores 2 extensions                    elastic-plastic wall, heterogeneous ensembles (not default)
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
 
@@ -30,7 +31,8 @@ include: "workflow/rules/common.smk"
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
 localrules: all, build_solver, case_file, dried_case_file, rest_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
-    convergence, aggregate_convergence, convergence_page, tissue, aggregate_tissue, tissue_page
+    convergence, aggregate_convergence, convergence_page, tissue, aggregate_tissue, tissue_page, \
+    extensions, aggregate_extensions, extensions_page
 
 
 include: "workflow/rules/solver.smk"
@@ -38,6 +40,7 @@ include: "workflow/rules/runs.smk"
 include: "workflow/rules/analysis.smk"
 include: "workflow/rules/convergence.smk"
 include: "workflow/rules/tissue.smk"
+include: "workflow/rules/extensions.smk"
 
 
 rule all:

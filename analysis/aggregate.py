@@ -9,6 +9,21 @@ STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
 LOAD_WINDOW = (0.05, 0.15)    # nominal strains over which the load partition is averaged
 
 
+def loading_branch(compression):
+    """The compression records up to the top plate's lowest point: all of them, unless the plate turned
+    back (compression.unload_at_strain); then the loading, without the unloading at the same strains."""
+    if compression.empty or "plate_top_z_m" not in compression:
+        return compression
+    return compression.iloc[: int(np.argmin(compression["plate_top_z_m"].to_numpy())) + 1]
+
+
+def unloading_branch(compression):
+    """The records after the top plate's lowest point (empty if it never turned back)."""
+    if compression.empty or "plate_top_z_m" not in compression:
+        return compression.iloc[0:0]
+    return compression.iloc[int(np.argmin(compression["plate_top_z_m"].to_numpy())) + 1:]
+
+
 def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
     """Stress when the nominal strain first reaches `strain` in compression (NaN if never)."""
     c = ts[ts["stage"] == 1]
@@ -34,8 +49,8 @@ def window_mean(strain, values, at, half_width=SMOOTH_STRAIN):
 def smoothed_stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
     """Mean stress of the compression records within +-SMOOTH_STRAIN of `strain`: the stress at that
     strain without the record-to-record ripple of the plate contact (NaN if the strain is not reached
-    by a full window)."""
-    c = ts[ts["stage"] == 1]
+    by a full window). On the loading branch: a loop's unloading passes the same strains."""
+    c = loading_branch(ts[ts["stage"] == 1])
     e = c["nominal_strain"].to_numpy()
     if not len(e) or not np.nanmax(e) >= strain + SMOOTH_STRAIN:
         return np.nan
@@ -55,6 +70,7 @@ def load_partition(compression, window=LOAD_WINDOW):
     plate force / (mean fluid pressure x top contact area), the fluid's share of what holds the
     touching wall particles up (fluid push / (fluid push + wall's own forces)), and the part of the
     plate force the pressure coupling's backstop gives (0 for LJ). NaN if the window is not reached."""
+    compression = loading_branch(compression)
     e = compression["nominal_strain"]
     w = compression[(e >= window[0]) & (e <= window[1])]
     if w.empty or "load_fluid_N" not in w:
@@ -67,7 +83,8 @@ def load_partition(compression, window=LOAD_WINDOW):
 
 
 ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transfer_energy_J", "closure_energy_J",
-                "drive_energy_J", "density_diffusion_energy_J", "backstop_work_J", "volume_closure_energy_J")
+                "drive_energy_J", "density_diffusion_energy_J", "backstop_work_J", "volume_closure_energy_J",
+                "plastic_loss_J")
 
 
 def energy_account(drying, compression):
@@ -89,8 +106,22 @@ def energy_account(drying, compression):
             "compression_energy_residual_over_work": change["energy_residual_J"] / work if work else np.nan,
             "compression_viscous_loss_over_work": change["viscous_loss_J"] / work if work else np.nan,
             "compression_damping_loss_over_work": change["damping_loss_J"] / work if work else np.nan,
+            "compression_plastic_loss_over_work": change.get("plastic_loss_J", np.nan) / work if work else np.nan,
         })
     return out
+
+
+def load_unload(compression):
+    """A loop's numbers (compression.unload_at_strain), NaN without one: the permanent set (the nominal
+    strain when the cell left the top plate, the stage's end), the energy the loop dissipated (the plate's
+    net work over it, the loop's area), and what of it the wall's plastic flow took."""
+    back = unloading_branch(compression)
+    if back.empty:
+        return {"unload_permanent_set": np.nan, "loop_dissipated_nJ": np.nan, "loop_plastic_loss_nJ": np.nan}
+    start, end = compression.iloc[0], compression.iloc[-1]
+    return {"unload_permanent_set": end["nominal_strain"],
+            "loop_dissipated_nJ": (end["plate_work_J"] - start["plate_work_J"]) * 1e9,
+            "loop_plastic_loss_nJ": (end.get("plastic_loss_J", np.nan) - start.get("plastic_loss_J", np.nan)) * 1e9}
 
 
 def summarise(ts):
@@ -104,6 +135,7 @@ def summarise(ts):
         "dried_mean_pressure_kPa": dried["mean_pressure_Pa"] / 1e3,
         "dried_wall_pressure_kPa": dried["wall_pressure_Pa"] / 1e3,
         "dried_wall_strain_mean": dried["wall_strain_mean"],
+        "dried_plastic_strain_mean": dried.get("wall_plastic_strain_mean", np.nan),
         # A tissue's (NaN for one cell): the hull of all its walls, the air between its cells, bonds holding.
         "dried_tissue_V_over_V0": dried.get("tissue_volume_m3", np.nan) / first.get("tissue_volume_m3", np.nan),
         "dried_porosity": dried.get("porosity", np.nan),
@@ -120,6 +152,8 @@ def summarise(ts):
             "end_mean_pressure_kPa": end["mean_pressure_Pa"] / 1e3,
             "end_wall_strain_mean": end["wall_strain_mean"],
             "end_lamella_intact": end.get("lamella_intact", np.nan),
+            "end_plastic_strain_mean": end.get("wall_plastic_strain_mean", np.nan),
+            **load_unload(compression),
         })
         for e in STRAINS:
             out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3

@@ -12,14 +12,15 @@ claim whose cases are not in the run (a reduced config) is "not run", and one wh
 but stop before the strains it compares (a reduced config's end strain) is "not reached"."""
 import numpy as np
 
-from analysis.aggregate import SMOOTH_STRAIN, window_mean
+from analysis.aggregate import SMOOTH_STRAIN, loading_branch, window_mean
 
 STRAIN = 0.05  # the strain of the point values kept beside the curve verdicts
 STRESS = f"stress_kPa_at_{STRAIN:.2f}"
 GRID_STEP = 0.005
 START_STRAIN = 0.02  # curves are compared from here on: below it the plates are still making contact
 EARLY_STRAIN = 0.05  # "early" for the impulsive peaks of fast plates (Figs 11-12)
-SERIES_COLUMNS = ["case", "stage", "nominal_strain", "plate_stress_Pa", "section_stress_Pa"]  # what evaluate reads
+SERIES_COLUMNS = ["case", "stage", "nominal_strain", "plate_stress_Pa", "section_stress_Pa",
+                  "plate_top_z_m"]  # what evaluate reads (the plate's height: a curve's loading branch)
 
 METHOD = (f"Curves are compared on a strain grid (step {GRID_STEP}) from {START_STRAIN} up to the strain both "
           f"cases reach; each grid point is the mean plate stress of all compression records within "
@@ -48,7 +49,7 @@ def _spread(values):
 
 def stress_curve(series, case, column="plate_stress_Pa"):
     """(grid strains, smoothed stress in kPa) of one case's compression; empty if it has none."""
-    c = series[(series["case"] == case) & (series["stage"] == 1)]
+    c = loading_branch(series[(series["case"] == case) & (series["stage"] == 1)])
     e, s = c["nominal_strain"].to_numpy(), c[column].to_numpy() / 1e3
     if len(e) == 0 or not np.isfinite(e).any():
         return np.array([]), np.array([])

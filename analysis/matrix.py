@@ -16,7 +16,7 @@ Every case is complete: a key that neither base nor an axis sets takes the solve
 config/schema/case.schema.json), so the case file of a case does not change when base comes to name
 a key at its default value (as adding an axis asks), and nothing reruns for it.
 
-A study with a `target` (convergence, tissue) is not part of the default target (`snakemake --cores 2`);
+A study with a `target` (convergence, tissue, extensions) is not part of the default target (`snakemake --cores 2`);
 it runs with `snakemake --cores 2 <target>`.
 """
 import copy
@@ -170,6 +170,10 @@ def check(config, root="."):
         for ref in spec.get("shrinkage_references", []):
             if ref not in shrinkage:
                 raise ConfigError(f"{where}.shrinkage_references: unknown reference '{ref}'; known: {sorted(shrinkage)}")
+        band = spec.get("band")
+        if band is not None and (spec["family"] != "curves" or band not in config["studies"][spec["study"]]["vary"]):
+            raise ConfigError(f"{where}.band: '{band}' must be an axis that study '{spec['study']}' varies, in a "
+                              f"curves figure (its values are the ensemble's members)")
         if spec["family"] == "shrinkage" and "dryness" not in config["studies"][spec["study"]]["vary"]:
             raise ConfigError(f"{where}: a shrinkage figure needs a study that varies dryness")
         if not figure_cases(config, fig, expand(config)):

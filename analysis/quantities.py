@@ -58,6 +58,9 @@ QUANTITIES = {
     "density_diffusion_energy_J": ("energy put in by the density diffusion [nJ]", 1e9),
     "backstop_work_J": ("work of the pressure coupling's backstop [nJ]", 1e9),
     "volume_closure_energy_J": ("energy of the volume closure [nJ]", 1e9),
+    "plastic_loss_J": ("dissipated by the wall's plastic flow [nJ]", 1e9),
+    "wall_plastic_strain_mean": ("mean plastic strain of the wall's bonds", 1.0),
+    "wall_plastic_strain_max": ("largest plastic strain of a wall bond", 1.0),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
 }
 

@@ -7,7 +7,7 @@ from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.colors import to_rgba
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from analysis import aggregate, quantities
+from analysis import aggregate, ensembles, quantities
 from analysis.figures import common, render
 from analysis.figures.common import ordered
 from analysis.figures.curves import is_stress
@@ -65,6 +65,15 @@ def check_curves(config, fig, figure, out):
         expected = {name: (c.sort_values("time_s")[x].to_numpy() * quantities.scale(x),
                            c.sort_values("time_s")[y].to_numpy() * quantities.scale(y))
                     for name, c in in_panel.groupby("case")}
+        if spec.get("band"):  # one mean line per ensemble: the members' mean on their shared range
+            expected = {}
+            for key, group in in_panel.groupby(spec["lines"]):
+                members = [(m.sort_values("time_s")[x].to_numpy(), m.sort_values("time_s")[y].to_numpy())
+                           for _, m in group.groupby(spec["band"])]
+                grid, mean, _, _ = ensembles.band(members)
+                expected[key] = (grid * quantities.scale(x), mean * quantities.scale(y))
+            bands = [c for c in ax.collections if c.get_label().endswith(f"percentile of {len(members)}")]
+            assert len(bands) == len(expected), f"{fig} panel {k}: {len(bands)} bands for {len(expected)} ensembles"
         simulated = [line for line in ax.lines if not (is_reference(line) or coloured(line, "grey"))]
         assert len(simulated) == len(expected), f"{fig} panel {k}: {len(simulated)} curves for {len(expected)} cases"
         unmatched = dict(expected)

@@ -20,7 +20,8 @@ def test_matrix_deduplicates_and_shares_dried_states(config):
     assert len(matrix.target_cases(config, cases)) == 48  # the paper's studies, the default target
     baseline = cases["D150_G18_P200_t6_v1_X1"]
     assert set(baseline.studies) == {"dryness_turgor", "plate_speed", "shear_modulus", "wall_thickness", "cell_size",
-                                     "convergence_resolution", "convergence_time_step", "coupling_comparison", "tissue"}
+                                     "convergence_resolution", "convergence_time_step", "coupling_comparison", "tissue",
+                                     "ensemble_reference"}
     fast = cases["D150_G18_P200_t6_v10_X0.5"]
     assert fast.dried == cases["D150_G18_P200_t6_v1_X0.5"].dried == "D150_G18_P200_t6_X0.5"
     assert fast.case["compression"]["plate_speed_m_s"] == 10 and fast.case["drying"]["dryness"] == 0.5

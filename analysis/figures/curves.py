@@ -1,8 +1,11 @@
 """Curves family: one quantity against time or strain, lines by an axis, panels by an axis or by
-quantity, with experimental reference curves on stress-strain panels (figures 4-7, 9-16, 18)."""
+quantity, with experimental reference curves on stress-strain panels (figures 4-7, 9-16, 18). With
+`band: <axis>` each line is an ensemble over that axis's values (seeds): its mean and its 10th-90th
+percentile band (analysis/ensembles.py)."""
 import numpy as np
 
 from analysis import quantities
+from analysis.ensembles import BAND_PERCENTILES, band
 from analysis.figures.common import legend_below, line_colours, ordered, panel_letter, row_with_legend, value_label
 from analysis.references import load as load_reference
 
@@ -23,7 +26,8 @@ def draw(config, fig, series, root="."):
     n_lines = series.groupby(grouper).ngroups if line_axes else 1
     n_references = len(spec.get("references", [])) if x == "nominal_strain" and any(map(is_stress, ys)) else 0
 
-    figure, axes, legend_axes = row_with_legend(len(panels), n_lines + n_references, sharey=len(ys) == 1)
+    per_line = 2 if spec.get("band") else 1  # a band's line and its shaded band each have an entry
+    figure, axes, legend_axes = row_with_legend(len(panels), per_line * n_lines + n_references, sharey=len(ys) == 1)
     for k, ((y, pv), ax) in enumerate(zip(panels, axes)):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
         groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
@@ -31,6 +35,9 @@ def draw(config, fig, series, root="."):
         for (key, curve), colour in zip(groups, colours):
             key = key if isinstance(key, tuple) else (key,)
             label = ", ".join(value_label(config, a, v) for a, v in zip(line_axes, key))
+            if spec.get("band"):
+                _draw_band(ax, curve, spec["band"], x, y, colour, label)
+                continue
             curve = curve.sort_values("time_s")
             ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.4,
                     label=label or None)
@@ -48,6 +55,19 @@ def draw(config, fig, series, root="."):
     legend_below(legend_axes, axes)  # below the panels: it never covers a curve nor narrows a panel
     figure.suptitle(spec["title"], fontsize=11)
     return figure
+
+
+def _draw_band(ax, curve, band_axis, x, y, colour, label):
+    """An ensemble's mean line and its percentile band, its members taken from the band axis's values."""
+    members = [m.sort_values("time_s") for _, m in curve.groupby(band_axis)]
+    grid, mean, low, high = band([(m[x].to_numpy(), m[y].to_numpy()) for m in members])
+    if not len(grid):
+        return
+    sx, sy = quantities.scale(x), quantities.scale(y)
+    lo, hi = BAND_PERCENTILES
+    ax.fill_between(grid * sx, low * sy, high * sy, color=colour, alpha=0.25, lw=0,
+                    label=f"{label}: {lo}th-{hi}th percentile of {len(members)}")
+    ax.plot(grid * sx, mean * sy, color=colour, lw=1.6, label=f"{label}: mean of {len(members)}")
 
 
 def is_stress(quantity):
