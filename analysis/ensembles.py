@@ -138,14 +138,16 @@ def _claim_row(claim, figure, measured, on_mean, per_member, homogeneous, agree,
             "verdict": ("agree" if agree(on_mean) else "disagree") if np.isfinite(on_mean) else "not run"}
 
 
-def band_growth(config, summary, study="ensemble_spread", column="smoothed_stress_kPa_at_0.10"):
-    """How the band grows with the coefficient of variation: per value of the spread axis, the band's
-    width over the mean of `column`, and the members' own coefficient of variation."""
+def band_growth(config, summary, study="ensemble_spread", strains=("0.05", "0.10")):
+    """How the band grows with the coefficient of variation: per value of the spread axis and strain, the
+    mean stress, the band's width over it, and the members' own coefficient of variation."""
     rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
     out = []
     for spread, group in rows.groupby("spread"):
-        mean, low, high = _band_of(group[column])
-        out.append({"CV of the properties": spread, "members": len(group), "mean stress at 0.10 [kPa]": mean,
-                    "band width / mean": (high - low) / mean if mean else np.nan,
-                    "CV of the members' stress": float(group[column].std() / mean) if mean else np.nan})
+        for strain in strains:
+            stress = group[f"smoothed_stress_kPa_at_{strain}"]
+            mean, low, high = _band_of(stress)
+            out.append({"CV of the properties": spread, "members": len(group), "strain": float(strain),
+                        "mean stress [kPa]": mean, "band width / mean": (high - low) / mean if mean else np.nan,
+                        "CV of the members' stress": float(stress.std() / mean) if mean else np.nan})
     return pd.DataFrame(out)
