@@ -111,6 +111,33 @@ def run_reduced_target(root, out, target, reduced_config, timeout=1800):
     return run_workflow(root, out, CI + [reduced_config], target, timeout=timeout)
 
 
+def reduced_target_fixture(target, reduced_config, timeout=2400):
+    """A module fixture: the folder of one run of `target` on a reduced config (run_reduced_target)."""
+    @pytest.fixture(scope="module")
+    def run(root, tmp_path_factory):
+        return run_reduced_target(root, tmp_path_factory.mktemp(f"{target} results"), target, reduced_config,
+                                  timeout=timeout)
+    return run
+
+
+def check_target_page(root, out, target, reduced_config, page, headings, figures, tmp_path):
+    """A target's page has its headings and shows its figures, each figure is what its spec asks
+    (figure_checks.py), and nothing of the default target was written. Returns the page's text."""
+    from analysis import matrix
+    from figure_checks import check_figures
+    text = (out / "report" / page).read_text()
+    for heading in headings:
+        assert heading in text
+    config = workflow_config(root, CI + [reduced_config], out)
+    assert matrix.target_figures(config, target) == figures
+    check_figures(config, out, root, tmp_path, figures)
+    for fig in figures:
+        assert f"figures/{fig}.png" in text
+    assert not (out / "figures" / "fig01.png").exists()
+    assert not (out / "report" / "index.html").exists()
+    return text
+
+
 def assert_same_results(out, reference):
     """Every result, table, figure and page of `out` is byte for byte the one of the reference run (the
     report names its own output folder: that name aside)."""

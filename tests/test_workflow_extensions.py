@@ -6,18 +6,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from analysis import matrix
-from conftest import CI, run_reduced_target, workflow_config
-from figure_checks import check_figures
+from conftest import check_target_page, reduced_target_fixture
 
 pytestmark = pytest.mark.slow
 REDUCED = "tests/extensions_reduced.yaml"
-
-
-@pytest.fixture(scope="module")
-def extensions_run(root, tmp_path_factory):
-    return run_reduced_target(root, tmp_path_factory.mktemp("extensions results"), "extensions", REDUCED,
-                              timeout=2400)
+extensions_run = reduced_target_fixture("extensions", REDUCED)
 
 
 def test_the_plastic_wall_keeps_a_larger_set_and_its_flow_takes_part_of_the_loops_energy(extensions_run):
@@ -48,15 +41,6 @@ def test_the_ensembles_are_summarised_by_mean_and_band_and_the_claims_judged_on_
 
 
 def test_page_and_figures_are_written_and_the_default_target_is_not(root, extensions_run, tmp_path):
-    page = (extensions_run / "report" / "extensions.html").read_text()
-    for heading in ("Load-unload: elastic and elastic-plastic walls", "Heterogeneous cells: mean and band",
-                    "The paper's claims on the ensemble's mean"):
-        assert heading in page
-    config = workflow_config(root, CI + [REDUCED], extensions_run)
-    figures = matrix.target_figures(config, "extensions")
-    assert figures == ["ext01", "ext02", "ext03", "ext04"]
-    check_figures(config, extensions_run, root, tmp_path, figures)
-    for fig in figures:
-        assert f"figures/{fig}.png" in page
-    assert not (extensions_run / "figures" / "fig01.png").exists()
-    assert not (extensions_run / "report" / "index.html").exists()
+    check_target_page(root, extensions_run, "extensions", REDUCED, "extensions.html",
+                      ["Load-unload: elastic and elastic-plastic walls", "Heterogeneous cells: mean and band",
+                       "The paper's claims on the ensemble's mean"], ["ext01", "ext02", "ext03", "ext04"], tmp_path)

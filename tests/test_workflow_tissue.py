@@ -4,18 +4,11 @@ target's. Slow: a few minutes on 2 cores."""
 import pandas as pd
 import pytest
 
-from analysis import matrix
-from conftest import CI, run_reduced_target, workflow_config
-from figure_checks import check_figures
+from conftest import check_target_page, reduced_target_fixture
 
 pytestmark = pytest.mark.slow
 REDUCED = "tests/tissue_reduced.yaml"
-
-
-@pytest.fixture(scope="module")
-def tissue_run(root, tmp_path_factory):
-    return run_reduced_target(root, tmp_path_factory.mktemp("tissue results"), "tissue", REDUCED,
-                              timeout=2400)
+tissue_run = reduced_target_fixture("tissue", REDUCED)
 
 
 def test_tissue_table_compares_each_tissue_with_the_single_cell(tissue_run):
@@ -31,15 +24,7 @@ def test_tissue_table_compares_each_tissue_with_the_single_cell(tissue_run):
 
 
 def test_page_figures_and_3d_views_are_written_and_the_default_target_is_not(root, tissue_run, tmp_path):
-    page = (tissue_run / "report" / "tissue.html").read_text()
-    assert "Tissues against the single cell" in page
-    config = workflow_config(root, CI + [REDUCED], tissue_run)
-    figures = matrix.target_figures(config, "tissue")
-    assert figures == ["tis01", "tis02", "tis03", "tis04"]
-    check_figures(config, tissue_run, root, tmp_path, figures)
-    for fig in figures:
-        assert f"figures/{fig}.png" in page
+    check_target_page(root, tissue_run, "tissue", REDUCED, "tissue.html", ["Tissues against the single cell"],
+                      ["tis01", "tis02", "tis03", "tis04"], tmp_path)
     views = sorted((tissue_run / "report" / "cells").glob("*N8*.data.js"))
     assert len(views) == 2 and '"n_cells": 8' in views[0].read_text()
-    assert not (tissue_run / "figures" / "fig01.png").exists()
-    assert not (tissue_run / "report" / "index.html").exists()
