@@ -46,24 +46,36 @@ INTRO = ("<h1>The paper's two named extensions: an elastic-plastic wall, and het
          "convergence page says how far its curves are from resolution-independent beyond strain 0.05). "
          "docs/model.md §3b-§3c give the laws and where their numbers come from.</p>")
 
-LOOP_TEXT = ("<p>The top plate loads each cell at 1 m/s to strain 0.15 and returns at 0.25 m/s; the run ends when "
-             "the cell leaves the plate, and the strain then is the permanent set. The loop's dissipated energy is "
-             "the plate's net work over it (the loop's area); 'by plastic flow' is what the wall's sliders took "
-             "(the rest went to the fluid's viscosity and the bonds' damping, Eqs 4 and 16, or stays in the "
-             "deformed cell). The elastic-plastic wall yields at 3 MPa (assumed; model.md §3b). A dried elastic "
-             "cell recovers slowly: part of its 'set' is a recovery slower than the plate's return.</p>")
+def loop_text(summary, study="load_unload"):
+    """What the loops ran, from their cases: speeds, turn, yield stress and hardening."""
+    rows = rows_of(summary, study)
+    if rows.empty:
+        return "<p>No load-unload study ran.</p>"
+    plastic = rows[rows["wall.yield_stress_MPa"].notna()]
+    values = lambda column, of=rows: ", ".join(f"{v:g}" for v in sorted(of[column].dropna().unique()))  # noqa: E731
+    return (f"<p>The top plate loads each cell at {values('compression.plate_speed_m_s')} m/s to strain "
+            f"{values('compression.unload_at_strain')} and returns at {values('compression.unload_speed_m_s')} m/s; "
+            "the run ends when the cell leaves the plate, and the strain then is the permanent set. The loop's "
+            "dissipated energy is the plate's net work over it (the loop's area); 'by plastic flow' is what the "
+            "wall's sliders took (the rest went to the fluid's viscosity and the bonds' damping, Eqs 4 and 16, or "
+            f"stays in the deformed cell). The elastic-plastic wall yields at {values('wall.yield_stress_MPa')} MPa "
+            f"and hardens by {values('wall.hardening_MPa', plastic)} MPa per unit plastic strain (numbers "
+            "assumed: docs/model.md §3b). A dried elastic cell recovers slowly: part of its 'set' is a recovery "
+            "slower than the plate's return.</p>")
+
 
 ENSEMBLE_TEXT = ("<p>Each member draws its bonds' G and t0 and its fluid's viscosity from lognormal "
-                 "distributions of mean 1 and the coefficient of variation given, the wall's draws correlated over "
-                 "20 um; eight seeds per ensemble. Numbers are the members' mean and their 10th-90th percentile "
-                 "band; 'homogeneous' is the paper's uniform cell at the same dryness. The claims below are "
-                 "judged on the ensemble's mean curves, with the same measure on each seed's pair of cells as "
-                 "the band.</p>")
+                 "distributions of mean 1 and the coefficient of variation given (the `spread` axis in "
+                 "config/config.yaml, which also sets how far the wall's draws are correlated); the members are "
+                 "the study's seeds. Numbers are the members' mean and their 10th-90th percentile band; "
+                 "'homogeneous' is the paper's uniform cell at the same dryness. The claims below are judged on the "
+                 "ensemble's mean curves, with the same measure on each seed's pair of cells as the band. The "
+                 "spread 1e-06 is a control: cells that differ by a millionth part by the dynamics alone.</p>")
 
 
-def write_page(path, config, frames, figure_files):
+def write_page(path, config, frames, figure_files, summary):
     here = pathlib.Path(path).parent
-    parts = [INTRO, "<h2>Load-unload: elastic and elastic-plastic walls</h2>", LOOP_TEXT,
+    parts = [INTRO, "<h2>Load-unload: elastic and elastic-plastic walls</h2>", loop_text(summary),
              report.frame_table(frames["load_unload"]),
              "<h2>Heterogeneous cells: mean and band</h2>", ENSEMBLE_TEXT, report.frame_table(frames["ensemble"]),
              "<h3>The paper's claims on the ensemble's mean</h3>", report.frame_table(frames["ensemble_claims"]),

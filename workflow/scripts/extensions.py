@@ -15,4 +15,4 @@ folder.mkdir(parents=True, exist_ok=True)
 for name, frame in frames.items():
     frame.to_csv(folder / f"{name}.csv", index=False)
 figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config, "extensions")}
-extensions.write_page(sm.output.html, config, frames, figures)
+extensions.write_page(sm.output.html, config, frames, figures, summary)
