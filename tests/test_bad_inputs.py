@@ -56,7 +56,7 @@ CONFIGS = {
     "reference_missing_file.yaml": "references.r.file: no such file 'data/references/none.csv'",
     "reference_bad_unit.yaml": ("'permille' is not one of ['1', '%']", "instance['references']['r']['strain_unit']"),
     "study_unknown_level.yaml": "studies.extra.vary.resolution: value 5",
-    "study_target_all.yaml": "'all' is not one of ['convergence', 'tissue']",
+    "study_target_all.yaml": "'all' is not one of ['convergence', 'tissue', 'extensions']",
     "shrinkage_reference_unknown.yaml": "figures.tis04.shrinkage_references: unknown reference 'nonesuch'",
 }
 
