@@ -33,12 +33,17 @@ def load_unload_table(summary, study="load_unload"):
 
 
 def tables(config, summary, series):
-    """{name: frame} of the page's tables (also written as CSV)."""
+    """{name: frame} of the page's tables (also written as CSV); a table whose study the config no longer
+    has is empty."""
+    studies = config["studies"]
     reference = rows_of(summary, "ensemble_reference")
-    return {"load_unload": load_unload_table(summary),
-            "ensemble": ensembles.ensemble_table(config, summary, "ensemble", reference),
-            "ensemble_claims": ensembles.ensemble_claims(config, summary, series, "ensemble", reference),
-            "band_growth": ensembles.band_growth(config, summary)}
+    has = lambda study: study in studies and not rows_of(summary, study).empty  # noqa: E731
+    return {"load_unload": load_unload_table(summary) if has("load_unload") else pd.DataFrame(),
+            "ensemble": ensembles.ensemble_table(config, summary, "ensemble", reference) if has("ensemble")
+            else pd.DataFrame(),
+            "ensemble_claims": ensembles.ensemble_claims(config, summary, series, "ensemble", reference)
+            if has("ensemble") else pd.DataFrame(),
+            "band_growth": ensembles.band_growth(config, summary) if has("ensemble_spread") else pd.DataFrame()}
 
 
 INTRO = ("<h1>The paper's two named extensions: an elastic-plastic wall, and heterogeneous properties</h1>"
@@ -73,13 +78,17 @@ ENSEMBLE_TEXT = ("<p>Each member draws its bonds' G and t0 and its fluid's visco
                  "spread 1e-06 is a control: cells that differ by a millionth part by the dynamics alone.</p>")
 
 
+def table(frame):
+    return report.frame_table(frame) if len(frame) else "<p>(Its study is not in this run's config.)</p>"
+
+
 def write_page(path, config, frames, figure_files, summary):
     here = pathlib.Path(path).parent
     parts = [INTRO, "<h2>Load-unload: elastic and elastic-plastic walls</h2>", loop_text(summary),
-             report.frame_table(frames["load_unload"]),
-             "<h2>Heterogeneous cells: mean and band</h2>", ENSEMBLE_TEXT, report.frame_table(frames["ensemble"]),
-             "<h3>The paper's claims on the ensemble's mean</h3>", report.frame_table(frames["ensemble_claims"]),
+             table(frames["load_unload"]),
+             "<h2>Heterogeneous cells: mean and band</h2>", ENSEMBLE_TEXT, table(frames["ensemble"]),
+             "<h3>The paper's claims on the ensemble's mean</h3>", table(frames["ensemble_claims"]),
              "<h3>How the band grows with the spread of the properties (fresh cells)</h3>",
-             report.frame_table(frames["band_growth"]),
+             table(frames["band_growth"]),
              report.figure_list(config, figure_files, here)]
     report.write_page(path, "cellsim extensions", parts)

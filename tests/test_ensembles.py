@@ -107,3 +107,13 @@ def test_a_band_figure_must_name_an_axis_its_study_varies(root):
     bad = dict(config, figures=dict(config["figures"], ext03=dict(config["figures"]["ext03"], band="turgor_kPa")))
     with pytest.raises(matrix.ConfigError, match=r"figures.ext03.band: 'turgor_kPa' must be an axis"):
         matrix.check(bad, str(root))
+
+
+def test_the_extensions_page_leaves_out_a_table_whose_study_is_gone():
+    from analysis import extensions
+    summary = ensemble_summary()
+    config = {"studies": {"ensemble": {"vary": {"dryness": [1.0, 0.1], "spread": [0.2], "seed": list(range(1, 9))}},
+                          "ensemble_reference": {"vary": {"dryness": [1.0, 0.1]}}}}
+    frames = extensions.tables(config, summary, ensemble_series(summary))
+    assert frames["load_unload"].empty and frames["band_growth"].empty
+    assert len(frames["ensemble"]) == 2 * len(ensembles.ENSEMBLE_QUANTITIES) and len(frames["ensemble_claims"]) == 2
