@@ -224,6 +224,9 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
     for (int c = 0; c < cells_.count(); ++c)
       fluid_viscosity_Pa_s_.insert(fluid_viscosity_Pa_s_.end(), static_cast<std::size_t>(cells_.fluid_count(c)),
                                    p.viscosity_Pa_s * factors.viscosity[static_cast<std::size_t>(c)]);
+  largest_viscosity_Pa_s_ = fluid_viscosity_Pa_s_.empty()
+                                ? p.viscosity_Pa_s
+                                : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
   if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
@@ -457,7 +460,8 @@ void Simulation::plate_terms() {
   energy_rates_.plate_W = 0;
   if (!plates.active) return;
   add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
-  energy_rates_.plate_W = plates.force_top_N * plates.top_speed_m_s;  // the wall pushes up, the plate moves down
+  // The wall pushes up; the plate moves down at top_speed_m_s (negative while it unloads).
+  energy_rates_.plate_W = plates.force_top_N * plates.top_speed_m_s;
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
@@ -603,10 +607,8 @@ void Simulation::check_time_step() const {
   const Eigen::Index i_v = fastest.i_v, i_a = fastest.i_a;
   const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
   const double sound_limit = 0.25 * h / (c0 + v_max);
-  const double mu_max = fluid_viscosity_Pa_s_.empty()
-                            ? p_.viscosity_Pa_s
-                            : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
-  const double viscous_limit = mu_max > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / mu_max : INFINITY;
+  const double viscous_limit =
+      largest_viscosity_Pa_s_ > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / largest_viscosity_Pa_s_ : INFINITY;
   const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
   const double dt = p_.dt_s;
   const auto fail = [&](double limit, const std::string& what) {

@@ -130,6 +130,7 @@ class Simulation {
   PlateLaw plate_law_;
   BondLaw bond_law_;
   std::vector<double> fluid_viscosity_Pa_s_;  // per fluid particle, with heterogeneity.fluid_viscosity_cv (else empty)
+  double largest_viscosity_Pa_s_ = 0;         // of any cell: the viscous time-step limit
 
   // Rates at the current positions.
   FluidRates fluid_;

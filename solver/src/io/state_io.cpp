@@ -75,7 +75,8 @@ void write_state(hid_t parent, const State& s) {
               {s.lamella_intact.size()});
   if (!s.lamella_peak_opening_m.empty())
     h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
-  h5::write(g.id(), "bond_plastic_elongation", s.bond_plastic_elongation_m, {s.bond_plastic_elongation_m.size()});  // the sliders: the plastic set
+  // the sliders: the plastic set a continued run carries
+  h5::write(g.id(), "bond_plastic_elongation", s.bond_plastic_elongation_m, {s.bond_plastic_elongation_m.size()});
 }
 
 SavedRun read_saved_run(const std::string& path) {
@@ -110,7 +111,8 @@ SavedRun read_saved_run(const std::string& path) {
     for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
     for (const auto& field : kEnergyFields)  // a flow added since the file was written started at 0
       s.energy.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : 0.0;
-    if (h5::exists(g.id(), "bond_plastic_elongation")) s.bond_plastic_elongation_m = h5::read_doubles(g.id(), "bond_plastic_elongation");
+    if (h5::exists(g.id(), "bond_plastic_elongation"))
+      s.bond_plastic_elongation_m = h5::read_doubles(g.id(), "bond_plastic_elongation");
     s.wall.x = h5::read_points(g.id(), "wall_positions");
     s.wall.v = h5::read_points(g.id(), "wall_velocities");
     s.fluid.x = h5::read_points(g.id(), "fluid_positions");
