@@ -75,14 +75,13 @@ def ensemble_table(config, summary, study, reference=None):
     out = []
     for key, group in members_of(rows, axes).items():
         ensemble = {a: v for a, v in zip([a for a in axes if a != SEED_AXIS], key)}
-        same = (reference[np.isclose(reference["dryness"], ensemble["dryness"])]
-                if reference is not None and "dryness" in ensemble else pd.DataFrame())
+        same = _reference_at(reference, ensemble["dryness"]) if "dryness" in ensemble else None
         for column, name in ENSEMBLE_QUANTITIES.items():
             mean, low, high = _band_of(group[column])
             out.append({**ensemble, "members": len(group), "quantity": name, "mean": mean,
                         f"{BAND_PERCENTILES[0]}th-{BAND_PERCENTILES[1]}th": f"{low:.4g} to {high:.4g}",
                         "CV of members": float(group[column].std() / mean) if mean else np.nan,
-                        "homogeneous": float(same[column].iloc[0]) if len(same) else np.nan})
+                        "homogeneous": float(same[column]) if same is not None else np.nan})
     return pd.DataFrame(out)
 
 
@@ -99,32 +98,36 @@ def _mean_curve(series, cases):
 def ensemble_claims(config, summary, series, study="ensemble", reference=None):
     """The paper's claims an ensemble of fresh and X/X0 = 0.1 cells covers (Figs 7 and 14), judged on the
     ensemble's mean curves; the band is that of the same measure on each seed's pair of cells."""
-    axes = list(config["studies"][study]["vary"])
     rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
     by_dryness = {x: g for x, g in rows.groupby("dryness")}
     if not {1.0, 0.1} <= set(by_dryness):
         return pd.DataFrame()
     fresh, dry = by_dryness[1.0].set_index(SEED_AXIS), by_dryness[0.1].set_index(SEED_AXIS)
     seeds = sorted(set(fresh.index) & set(dry.index))
-    homogeneous = (lambda x, column: float(reference[np.isclose(reference["dryness"], x)][column].iloc[0])
-                   if reference is not None and np.isclose(reference["dryness"], x).any() else np.nan)
-    out = []
-    stiffer = [claims.mean_ratio(claims.stress_curve(series, fresh.loc[s, "case"]),
-                                 claims.stress_curve(series, dry.loc[s, "case"])) for s in seeds]
-    on_mean = claims.mean_ratio(_mean_curve(series, fresh.loc[seeds, "case"]), _mean_curve(series, dry.loc[seeds, "case"]))
-    ref_ratio = np.nan
-    if reference is not None and np.isclose(reference["dryness"], 1.0).any() and np.isclose(reference["dryness"], 0.1).any():
-        ref_ratio = claims.mean_ratio(claims.stress_curve(series, reference[np.isclose(reference["dryness"], 1.0)]["case"].iloc[0]),
-                                      claims.stress_curve(series, reference[np.isclose(reference["dryness"], 0.1)]["case"].iloc[0]))
-    out.append(_claim_row("Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1)", "7",
-                          "ratio of mean stresses, fresh / X/X0 = 0.1", on_mean, stiffer, ref_ratio,
-                          lambda r: r > 1.0, "> 1"))
-    peaks = [fresh.loc[s, "peak_force_top_uN"] / dry.loc[s, "peak_force_top_uN"] for s in seeds]
-    on_mean = fresh.loc[seeds, "peak_force_top_uN"].mean() / dry.loc[seeds, "peak_force_top_uN"].mean()
+    ref_fresh, ref_dry = _reference_at(reference, 1.0), _reference_at(reference, 0.1)
+    both = ref_fresh is not None and ref_dry is not None
+    curve = lambda case: claims.stress_curve(series, case)  # noqa: E731
+    stiffer = [claims.mean_ratio(curve(fresh.loc[s, "case"]), curve(dry.loc[s, "case"])) for s in seeds]
+    out = [_claim_row("Fresh cells are stiffer than extremely dried ones (X/X0 = 1.0 vs 0.1)", "7",
+                      "ratio of mean stresses, fresh / X/X0 = 0.1",
+                      claims.mean_ratio(_mean_curve(series, fresh.loc[seeds, "case"]),
+                                        _mean_curve(series, dry.loc[seeds, "case"])), stiffer,
+                      claims.mean_ratio(curve(ref_fresh["case"]), curve(ref_dry["case"])) if both else np.nan,
+                      lambda r: r > 1.0, "> 1")]
+    peak = "peak_force_top_uN"
     out.append(_claim_row("The plate force is largest for fresh cells", "14", "peak top-plate force, fresh / X/X0 = 0.1",
-                          on_mean, peaks, homogeneous(1.0, "peak_force_top_uN") / homogeneous(0.1, "peak_force_top_uN"),
-                          lambda r: r > 1.0, "> 1"))
+                          fresh.loc[seeds, peak].mean() / dry.loc[seeds, peak].mean(),
+                          [fresh.loc[s, peak] / dry.loc[s, peak] for s in seeds],
+                          ref_fresh[peak] / ref_dry[peak] if both else np.nan, lambda r: r > 1.0, "> 1"))
     return pd.DataFrame(out)
+
+
+def _reference_at(reference, dryness):
+    """The homogeneous cell's summary row at this dryness, or None."""
+    if reference is None:
+        return None
+    same = reference[np.isclose(reference["dryness"], dryness)]
+    return same.iloc[0] if len(same) else None
 
 
 def _claim_row(claim, figure, measured, on_mean, per_member, homogeneous, agree, threshold):

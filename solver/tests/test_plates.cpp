@@ -2,6 +2,7 @@
 // outside; the plates feel the reaction.
 #include <gtest/gtest.h>
 
+#include "physics/plate_motion.hpp"
 #include "physics/plates.hpp"
 
 using namespace cellsim;
@@ -34,4 +35,25 @@ TEST(Plates, ForceIsLinearInOverlapInsideFootprintOnly) {
   EXPECT_EQ(plates.contacts, 3);
   EXPECT_DOUBLE_EQ(plates.force_top_N, -(f(2, 0) + f(2, 5)));  // reaction on the top plate
   EXPECT_DOUBLE_EQ(plates.force_bottom_N, f(2, 1));
+}
+
+// The top plate's schedule (plate_motion.hpp): down at the plate speed, and after the turn up at the
+// unload speed from where it turned; its speed (for the plate's work) changes sign at the turn.
+TEST(PlateMotion, ThePlateGoesDownThenTurnsBackFromWhereItIs) {
+  Plates plates;
+  plates.active = true;
+  plates.top_start_z_m = 100e-6;
+  plates.start_time_s = 2e-6;
+  const PlateMotion loading_only{1.0, std::nullopt, 1.0};
+  EXPECT_FALSE(awaits_turn(plates, loading_only));
+  const PlateMotion m{2.0, 0.1, 0.5};
+  EXPECT_TRUE(awaits_turn(plates, m));
+  EXPECT_DOUBLE_EQ(top_plate_z_m(plates, m, 7e-6), 100e-6 - 2.0 * 5e-6);
+  EXPECT_EQ(top_plate_speed_m_s(plates, m), 2.0);
+  plates.top_z_m = top_plate_z_m(plates, m, 7e-6);
+  turn_top_plate(plates, 7e-6);
+  EXPECT_FALSE(awaits_turn(plates, m));
+  EXPECT_DOUBLE_EQ(top_plate_z_m(plates, m, 7e-6), 90e-6);
+  EXPECT_DOUBLE_EQ(top_plate_z_m(plates, m, 11e-6), 90e-6 + 0.5 * 4e-6);
+  EXPECT_EQ(top_plate_speed_m_s(plates, m), -0.5);
 }

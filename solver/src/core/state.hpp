@@ -37,10 +37,10 @@ struct Plates {
   double contact_height_m = 0;    // H_c: cell height when compression starts
   double footprint_m2 = 0;        // area of the wall's outline seen from above when compression starts
   double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
-  // Load-unload (compression.unload_at_strain): from unload_start_time_s on, the top plate moves back up.
+  // Load-unload (compression.unload_at_strain): from unload_start_time_s on, the top plate moves back up
+  // (physics/plate_motion.hpp).
   bool unloading = false;
   double unload_start_time_s = 0, unload_start_z_m = 0;
-  double top_speed_m_s = 0;       // the top plate's speed of the moment, downward positive
 };
 
 // The energy account's running integrals since t = 0 (engine/energy_account.hpp), kept with the state so

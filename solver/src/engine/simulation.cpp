@@ -207,6 +207,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
       neighbours_(kSkinOverH0 * *p.h0_m),
       lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
       plate_law_(plate_law(p)),
+      plate_motion_(plate_motion(p)),
       bond_law_(make_bond_law(p, factors)),
       drift_density_(p.density_update == kDensityDrift),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
@@ -282,7 +283,9 @@ void Simulation::step() {
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) apply_pressure_closure();
   if (s_.stage == Stage::Compression) apply_volume_closure();
-  start_unloading_when_due();
+  // compression.unload_at_strain: once the cell reaches it, the top plate turns back (plate_motion.hpp).
+  if (awaits_turn(s_.plates, plate_motion_) && nominal_strain() >= *plate_motion_.turn_at_strain)
+    turn_top_plate(s_.plates, s_.time_s);
   ++s_.step;
   ++s_.stage_step;
   check_state();
@@ -460,8 +463,8 @@ void Simulation::plate_terms() {
   energy_rates_.plate_W = 0;
   if (!plates.active) return;
   add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
-  // The wall pushes up; the plate moves down at top_speed_m_s (negative while it unloads).
-  energy_rates_.plate_W = plates.force_top_N * plates.top_speed_m_s;
+  // The wall pushes up; the plate moves down (negative speed while it unloads).
+  energy_rates_.plate_W = plates.force_top_N * top_plate_speed_m_s(plates, plate_motion_);
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
@@ -487,20 +490,7 @@ void Simulation::drift(double dt) {
   moved_since_lists_m_ += dt * std::sqrt(std::max(fluid_v2, wall_v2));
   s_.time_s += dt;
   Plates& plates = s_.plates;
-  if (!plates.active) return;
-  plates.top_z_m = plates.unloading
-                       ? plates.unload_start_z_m + *p_.unload_speed_m_s * (s_.time_s - plates.unload_start_time_s)
-                       : plates.top_start_z_m - p_.plate_speed_m_s * (s_.time_s - plates.start_time_s);
-}
-
-// compression.unload_at_strain: once the cell reaches it, the top plate turns and moves back up.
-void Simulation::start_unloading_when_due() {
-  Plates& plates = s_.plates;
-  if (!plates.active || plates.unloading || !p_.unload_at_strain || nominal_strain() < *p_.unload_at_strain) return;
-  plates.unloading = true;
-  plates.unload_start_time_s = s_.time_s;
-  plates.unload_start_z_m = plates.top_z_m;
-  plates.top_speed_m_s = -*p_.unload_speed_m_s;
+  if (plates.active) plates.top_z_m = top_plate_z_m(plates, plate_motion_, s_.time_s);
 }
 
 // The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
@@ -672,7 +662,6 @@ void Simulation::start_compression() {
   plates.contact_height_m = cell_height_m(s_.wall.x);
   plates.footprint_m2 = convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");
-  plates.top_speed_m_s = p_.plate_speed_m_s;
   plates.unloading = false;
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();

@@ -22,6 +22,7 @@
 #include "physics/fluid_pairs.hpp"
 #include "physics/kernel.hpp"
 #include "physics/lennard_jones.hpp"
+#include "physics/plate_motion.hpp"
 #include "physics/plates.hpp"
 #include "physics/pressure_coupling.hpp"
 #include "physics/wall_bonds.hpp"
@@ -32,8 +33,6 @@ namespace cellsim {
 class Simulation {
  public:
   Simulation(const Params& p, const Tissue& tissue);
-  // With the heterogeneous properties' factors given (the other constructor draws them from p's seed).
-  Simulation(const Params& p, const Tissue& tissue, const PropertyFactors& factors);
 
   void step();                  // one kick-drift-kick step of dt
   void start_compression();     // switches L_p and places the plates (model.md §6)
@@ -89,6 +88,9 @@ class Simulation {
   const WallSurface& surface() const { return surface_; }
 
  private:
+  // The constructor's work, with the heterogeneous properties' factors drawn once (they set the bond law
+  // and the fluid's viscosity).
+  Simulation(const Params& p, const Tissue& tissue, const PropertyFactors& factors);
   // density_step_s > 0: first advance the density and mass by that step from the continuity rates at
   // these positions and velocities (time.density_update = drift), then the forces at the new density.
   void compute_rates(double density_step_s = 0);
@@ -104,7 +106,6 @@ class Simulation {
   void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
-  void start_unloading_when_due();
   void apply_pressure_closure();
   void apply_volume_closure();
   std::vector<double> cell_volume_ratios() const;  // per cell: sum(m/rho) / enclosed volume
@@ -128,6 +129,7 @@ class Simulation {
   NeighbourLists neighbours_;
   LennardJones lj_;
   PlateLaw plate_law_;
+  PlateMotion plate_motion_;
   BondLaw bond_law_;
   std::vector<double> fluid_viscosity_Pa_s_;  // per fluid particle, with heterogeneity.fluid_viscosity_cv (else empty)
   double largest_viscosity_Pa_s_ = 0;         // of any cell: the viscous time-step limit
