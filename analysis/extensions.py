@@ -70,7 +70,7 @@ def loop_text(summary, study="load_unload"):
 
 
 ENSEMBLE_TEXT = ("<p>Each member draws its bonds' G and t0 and its fluid's viscosity from lognormal "
-                 "distributions of mean 1 and the coefficient of variation given (the `spread` axis in "
+                 "distributions of mean 1 and the coefficient of variation given (the <code>spread</code> axis in "
                  "config/config.yaml, which also sets how far the wall's draws are correlated); the members are "
                  "the study's seeds. Numbers are the members' mean and their 10th-90th percentile band; "
                  "'homogeneous' is the paper's uniform cell at the same dryness. The claims below are judged on the "
