@@ -1,6 +1,7 @@
 #pragma once
 // The stages' caps (drying.steps, compression.steps; model.md §5-6) default to durations, so that a
 // case run at another time step (a resolution level, a time-step study) needs no caps of its own.
+#include <algorithm>
 #include <cmath>
 
 #include <sstream>
@@ -12,13 +13,17 @@ namespace cellsim {
 
 inline constexpr double kDryingCapTime_s = 80e-6;       // the paper's 80 000 steps of 1 ns
 inline constexpr double kCompressionCapTime_s = 25e-6;  // 25 000 steps of 1 ns: strain 0.15 at 1 m/s
+inline constexpr double kCapReferenceSpeed_m_s = 1.0;     // plates slower than this get the same travel
 
-// Fills in the caps a case leaves to auto: the duration over time.dt_ns, rounded. A load-unload
-// (compression.unload_at_strain) adds the way back: the loading's time x plate speed / unload speed.
+// Fills in the caps a case leaves to auto: the duration over time.dt_ns, rounded. A plate slower than
+// 1 m/s gets as much travel as one at 1 m/s (25 us x 1 m/s / speed; faster ones keep the 25 us), and a
+// load-unload (compression.unload_at_strain) adds the way back: the loading's time x plate speed /
+// unload speed.
 inline void resolve_stage_caps(Params& p) {
   if (!p.drying_steps) p.drying_steps = std::llround(kDryingCapTime_s / p.dt_s);
+  const double loading_time_s = kCompressionCapTime_s * std::max(1.0, kCapReferenceSpeed_m_s / p.plate_speed_m_s);
   const double unload_share = p.unload_at_strain ? p.plate_speed_m_s / *p.unload_speed_m_s : 0.0;
-  if (!p.compression_steps) p.compression_steps = std::llround(kCompressionCapTime_s * (1.0 + unload_share) / p.dt_s);
+  if (!p.compression_steps) p.compression_steps = std::llround(loading_time_s * (1.0 + unload_share) / p.dt_s);
 }
 
 // compression.unload_speed_m_s defaults to the loading speed; a plate that turns back must turn before

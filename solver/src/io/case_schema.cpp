@@ -202,7 +202,7 @@ std::vector<ParamSpec> build_specs() {
       // compression
       derived_integer("compression.steps", &P::compression_steps, 0, 1e9,
                       "maximum time steps of the compression stage", "model.md §6",
-                      "25 us / time.dt_ns (25000 at 1 ns): a cap in time, whatever the time step"),
+                      "25 us / time.dt_ns (25000 at 1 ns), x 1 m/s / plate speed for slower plates: a cap in time and travel"),
       real("compression.plate_speed_m_s", "m/s", 1.0, &P::plate_speed_m_s, 1, 0, false, 1000, true,
            "downward speed of the top plate", "model.md §6"),
       real("compression.Lp_m_per_s_Pa", "m/(s Pa)", 1.0, &P::compression_Lp_m_per_s_Pa, 1e-12, 0, true, 1, true,
