@@ -57,12 +57,14 @@ def smoothed_stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
     return window_mean(e, c[stress_column].to_numpy(), strain)
 
 
-def with_compression_time(ts):
-    """Adds compression_time_s: time since the plates started, NaN in drying (compression starts at
-    the last drying record, where drying ended)."""
+def with_compression_series(ts):
+    """Adds, NaN in drying (compression starts at the last drying record, where drying ended):
+    compression_time_s, the time since the plates started; compression_mass_lost, the share of the
+    fluid's mass at that moment that has left the cell since (Eq 11: the drained bound)."""
     drying = ts["stage"] == 0
-    compression_start = ts.loc[drying, "time_s"].max() if drying.any() else ts["time_s"].min()
-    return ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - compression_start))
+    start = ts[drying].iloc[-1] if drying.any() else ts.iloc[0]
+    return ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - start["time_s"]),
+                     compression_mass_lost=np.where(drying, np.nan, 1.0 - ts["fluid_mass_kg"] / start["fluid_mass_kg"]))
 
 
 def load_partition(compression, window=LOAD_WINDOW):
@@ -158,6 +160,8 @@ def summarise(ts):
         for e in STRAINS:
             out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
             out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
+            out[f"mass_lost_at_{e:.2f}"] = (stress_at_strain(ts, e, "compression_mass_lost")
+                                            if "compression_mass_lost" in ts else np.nan)
             out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
                                                        if "footprint_stress_Pa" in ts else np.nan)
         force_ratio, fluid_share, backstop_share = load_partition(compression)
@@ -172,7 +176,7 @@ def tables(runs):
     """runs: [(Case, path of its result)] -> (timeseries table, summary table)."""
     series, summary = [], []
     for case, path in runs:
-        ts = with_compression_time(timeseries(path))
+        ts = with_compression_series(timeseries(path))
         params = {"case": case.name, "dried": case.dried, "studies": " ".join(case.studies), **case.values,
                   **flatten(resolved_case(path))}
         series.append(ts.assign(**{k: v for k, v in params.items()}))

@@ -178,7 +178,22 @@ def check(config, root="."):
             raise ConfigError(f"{where}: a shrinkage figure needs a study that varies dryness")
         if not figure_cases(config, fig, expand(config)):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
+    check_compare_with(config)
     check_cases(config)
+
+
+def check_compare_with(config):
+    """compare_with (analysis/comparison.py): another folder than this run's, and curves figures only."""
+    spec = config.get("compare_with")
+    if not spec:
+        return
+    if pathlib.Path(spec["output_dir"]).resolve() == pathlib.Path(config["output_dir"]).resolve():
+        raise ConfigError(f"compare_with.output_dir: '{spec['output_dir']}' is this run's own output_dir; name the "
+                          "other run's folder")
+    for fig in spec.get("figures", []):
+        if fig not in config["figures"] or config["figures"][fig]["family"] != "curves":
+            raise ConfigError(f"compare_with.figures: '{fig}' is not a curves figure of this config; curves figures: "
+                              f"{sorted(f for f, s in config['figures'].items() if s['family'] == 'curves')}")
 
 
 CASE_SCHEMA = pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" / "case.schema.json"

@@ -69,6 +69,8 @@ DERIVED = {
     # Drying ends at steady state, so compressions start at different times: curves against time in
     # compression are drawn against the time since the plates started, as the paper draws them.
     "compression_time_s": ("time in compression [us]", 1e6),
+    # The drained bound (Eq 11 in compression): the fluid mass that left since the plates started.
+    "compression_mass_lost": ("fluid mass lost in compression [%]", 100.0),
 }
 
 DRAWABLE = {**QUANTITIES, **DERIVED}  # what a figure's x and y may name

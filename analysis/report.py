@@ -7,6 +7,7 @@ import pathlib
 
 import markdown
 
+from analysis import bounds, comparison
 from analysis.matrix import figure_cases
 
 
@@ -149,6 +150,9 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
     parts.append(energy_box(summary))
     parts.append("<h2>The paper's claims and this run</h2>")
     parts.append(claims_table(claim_rows))
+    if comparison.other(config):
+        parts.append(f"<h2>The claims under both configurations</h2>{comparison.section(config, claim_rows)}")
+    parts.append(bounds.section(config, summary))
     parts.append("<h2>Figures</h2>")
     for fig, png in figure_files.items():
         rel = os.path.relpath(png, here)

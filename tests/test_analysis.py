@@ -253,12 +253,15 @@ def test_drying_summary_reads_a_result_files_start_and_steady_state(cellsim, tmp
     assert summary["warning"] == "drying reached drying.steps without a steady state"  # a str, not bytes
 
 
-def test_compression_time_counts_from_the_end_of_drying():
-    from analysis.aggregate import with_compression_time
-    ts = pd.DataFrame({"time_s": [0.0, 20e-6, 40e-6, 40.1e-6, 41e-6], "stage": [0, 0, 0, 1, 1]})
-    out = with_compression_time(ts)["compression_time_s"].to_numpy()
-    assert np.isnan(out[:3]).all()
-    assert out[3:] == pytest.approx([0.1e-6, 1e-6])
+def test_compression_time_and_mass_lost_count_from_the_end_of_drying():
+    from analysis.aggregate import with_compression_series
+    ts = pd.DataFrame({"time_s": [0.0, 20e-6, 40e-6, 40.1e-6, 41e-6], "stage": [0, 0, 0, 1, 1],
+                       "fluid_mass_kg": [2.0, 1.5, 1.0, 0.99, 0.9]})
+    out = with_compression_series(ts)
+    assert np.isnan(out["compression_time_s"].to_numpy()[:3]).all()
+    assert out["compression_time_s"].to_numpy()[3:] == pytest.approx([0.1e-6, 1e-6])
+    assert np.isnan(out["compression_mass_lost"].to_numpy()[:3]).all()
+    assert out["compression_mass_lost"].to_numpy()[3:] == pytest.approx([0.01, 0.1])
 
 
 def convergence_summary(stress_of_spacing, dryness=(1.0,), levels=((3082, 2067, 1.0), (8717, 4134, 1.0), (24656, 8268, 0.5))):

@@ -83,6 +83,10 @@ def write_config(tmp_path, change):
      ["references.r.file: no such file 'data/references/none.csv'"]),               # missing file
     ({"axes": {"G_again": {"key": "wall.G_MPa", "label": "Gg"}}},
      ["G_again", "its key 'wall.G_MPa'", "two axes cannot set one key"]),            # two axes, one key
+    ({"compare_with": {"output_dir": "results", "label": "paper", "this_run": "ours", "figures": ["fig02"]}},
+     ["compare_with.figures: 'fig02' is not a curves figure"]),                     # shapes have no curves
+    ({"compare_with": {"output_dir": "results", "label": "paper"}},
+     ["'this_run' is a required property", "instance['compare_with']"]),            # incomplete comparison
 ])
 def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, change, named):
     done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")
@@ -91,6 +95,30 @@ def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, chang
     for words in named:
         assert words in message, message[-2000:]
     assert "Job stats" not in done.stdout  # nothing was planned
+
+
+def test_a_comparison_with_its_own_output_folder_is_refused(root, tmp_path):
+    change = {"compare_with": {"output_dir": str(tmp_path), "label": "paper", "this_run": "ours"}}
+    done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")
+    assert done.returncode != 0
+    assert f"compare_with.output_dir: '{tmp_path}' is this run's own output_dir" in done.stdout + done.stderr
+
+
+def test_converged_config_plans_the_papers_studies_and_the_bounds_in_its_own_folder(root, tmp_path):
+    """config/converged.yaml: the paper's 48 cases under other numerics (the same names), the rate study's
+    9 slower cases and the drainage study's 6 drained ones, from the paper's 39 dried states; 18 + 2 figures;
+    its own folder, not the paper's."""
+    assert yaml.safe_load((root / "config" / "converged.yaml").read_text())["output_dir"] == "results-converged"
+    done = dry_run(root, "--configfile", "config/converged.yaml", "--printshellcmds", "--config", f"output_dir={tmp_path}")
+    assert done.returncode == 0, done.stderr[-2000:]
+    counts = job_counts(done.stdout)
+    assert counts["compress"] == 48 + 9 + 6 and counts["dry"] == 39 and counts["figure"] == 20
+    assert f"{tmp_path}/figures/rate01.png" in done.stdout
+    assert f"{tmp_path}/runs/D150_G18_P200_t6_v0.1_X0.1.h5" in done.stdout
+    assert f"{tmp_path}/runs/D150_G18_Lp1e-06_P200_t6_v1_X0.5.h5" in done.stdout
+    for setting in ('"n_fluid": 8717', '"model": "pressure"', '"h_over_dx": 1.2', '"dt_ns": 0.5'):  # level 2's
+        assert setting in done.stdout
+    assert '"n_fluid": 3082' not in done.stdout  # no case left at the paper's level 1 (the 200 um cell included)
 
 
 def test_added_study_and_figure_are_planned(root, tmp_path):

@@ -1,7 +1,8 @@
 """Curves family: one quantity against time or strain, lines by an axis, panels by an axis or by
 quantity, with experimental reference curves on stress-strain panels (figures 4-7, 9-16, 18). With
 `band: <axis>` each line is an ensemble over that axis's values (seeds): its mean and its 10th-90th
-percentile band (analysis/ensembles.py)."""
+percentile band (analysis/ensembles.py). With `overlay` (a run beside this one, analysis/comparison.py)
+each line has the other run's curve of the same case dashed beside it."""
 import numpy as np
 
 from analysis import quantities
@@ -10,13 +11,16 @@ from analysis.figures.common import legend_below, line_colours, ordered, panel_l
 from analysis.references import load as load_reference
 
 
-def draw(config, fig, series, root="."):
-    """series: the tidy time series table restricted to this figure's cases."""
+def draw(config, fig, series, root=".", overlay=None):
+    """series: the tidy time series table restricted to this figure's cases. overlay: (the other run's
+    series of the same cases, its label, this run's label), or None."""
     spec = config["figures"][fig]
     x, ys = spec["x"], spec["y"]
     stage = spec.get("stage", "compression")
     if stage != "all":
         series = series[series["stage"] == (1 if stage == "compression" else 0)]
+        if overlay is not None:
+            overlay = (overlay[0][overlay[0]["stage"] == (1 if stage == "compression" else 0)], *overlay[1:])
     line_axes = spec.get("lines") or []
     line_axes = [line_axes] if isinstance(line_axes, str) else line_axes
     panel_axis = spec.get("panels")
@@ -27,7 +31,9 @@ def draw(config, fig, series, root="."):
     n_references = len(spec.get("references", [])) if x == "nominal_strain" and any(map(is_stress, ys)) else 0
 
     per_line = 2 if spec.get("band") else 1  # a band's line and its shaded band each have an entry
-    figure, axes, legend_axes = row_with_legend(len(panels), per_line * n_lines + n_references, sharey=len(ys) == 1)
+    n_styles = 2 if overlay is not None else 0  # the two runs' line styles
+    figure, axes, legend_axes = row_with_legend(len(panels), per_line * n_lines + n_references + n_styles,
+                                                sharey=len(ys) == 1)
     for k, ((y, pv), ax) in enumerate(zip(panels, axes)):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
         groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
@@ -41,6 +47,11 @@ def draw(config, fig, series, root="."):
             curve = curve.sort_values("time_s")
             ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.4,
                     label=label or None)
+            if overlay is not None:
+                _draw_other(ax, overlay[0], curve["case"].iloc[0], x, y, colour)
+        if overlay is not None:
+            ax.plot([], [], color="0.3", lw=1.4, label=f"solid: {overlay[2]}")
+            ax.plot([], [], color="0.3", lw=1.0, ls="--", label=f"dashed: {overlay[1]}")
         if x == "nominal_strain" and is_stress(y):
             _draw_references(config, spec, ax, root)
         title = panel_letter(k) if len(panels) > 1 else ""
@@ -68,6 +79,13 @@ def _draw_band(ax, curve, band_axis, x, y, colour, label):
     ax.fill_between(grid * sx, low * sy, high * sy, color=colour, alpha=0.25, lw=0,
                     label=f"{label}: {lo}th-{hi}th percentile of {len(members)}")
     ax.plot(grid * sx, mean * sy, color=colour, lw=1.6, label=f"{label}: mean of {len(members)}")
+
+
+def _draw_other(ax, other_series, case, x, y, colour):
+    """The other run's curve of the same case, dashed in the same colour (nothing if it has none)."""
+    curve = other_series[other_series["case"] == case].sort_values("time_s")
+    if not curve.empty:
+        ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.0, ls="--")
 
 
 def is_stress(quantity):

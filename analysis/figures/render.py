@@ -1,6 +1,6 @@
 """One figure of the config drawn from a results folder, as the workflow draws it: the `figure` rule
 (workflow/scripts/figure.py) and the tests that check a figure's content call this one function."""
-from analysis import aggregate, matrix
+from analysis import aggregate, comparison, matrix
 from analysis.figures import curves, model, shapes, shrinkage
 
 
@@ -18,5 +18,20 @@ def draw(config, fig, output_dir, root="."):
     cases, runs = inputs(config, fig, output_dir)
     if family in ("curves", "shrinkage"):
         series, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
-        return curves.draw(config, fig, series, root) if family == "curves" else shrinkage.draw(config, fig, summary, root)
+        if family == "shrinkage":
+            return shrinkage.draw(config, fig, summary, root)
+        return curves.draw(config, fig, series, root, overlay=other_run_series(config, fig, cases))
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, cases)
+
+
+def other_run_series(config, fig, cases):
+    """(series, its label, this run's label) of the other run's results of these cases, for a figure
+    that overlays them (analysis/comparison.py); None if it does not or that run has none of them."""
+    if not comparison.overlaid(config, fig):
+        return None
+    found = comparison.other_runs(config, cases)
+    if not found:
+        return None
+    _, other_label, this_label = comparison.other(config)
+    series, _ = aggregate.tables([(cases[n], path) for n, path in found.items()])
+    return series, other_label, this_label

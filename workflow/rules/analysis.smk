@@ -23,7 +23,9 @@ def figure_inputs(wildcards):
     runs = [run_file(n) for n in names]
     dried = sorted({dried_file(CASES[n].dried) for n in names})
     refs = [config["references"][r]["file"] for r in config["figures"][wildcards.fig].get("references", [])]
-    return {"runs": runs, "dried": dried, "references": refs}
+    # The other run's results of the same cases, where they exist (compare_with; analysis/comparison.py).
+    other = list(comparison.other_runs(config, names).values()) if comparison.overlaid(config, wildcards.fig) else []
+    return {"runs": runs, "dried": dried, "references": refs, "other_runs": other}
 
 
 rule figure:
@@ -44,6 +46,8 @@ rule report:
         timeseries=f"{OUT}/tables/timeseries.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=FIGURES),
         sources=["paper/report_intro.md", "docs/model-closures.md"],
+        # The other run's claims, once it exists (compare_with): the report sets them beside this run's.
+        other_claims=lambda w: [p for p in [comparison.other_claims_file(config)] if p and os.path.exists(p)],
         cells=expand(f"{OUT}/report/cells/{{case}}.html", case=DEFAULT_CASES),
         js=[f"{OUT}/report/js/three.min.js", f"{OUT}/report/js/OrbitControls.js"],
     output:

@@ -1,10 +1,11 @@
 # The experiment matrix, computed once when the workflow is parsed (analysis/matrix.py).
+import os
 import sys
 
 from snakemake.exceptions import WorkflowError
 
 sys.path.insert(0, workflow.basedir)
-from analysis import matrix  # noqa: E402
+from analysis import comparison, matrix  # noqa: E402
 
 try:
     matrix.check(config, workflow.basedir)

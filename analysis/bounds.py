@@ -1,0 +1,136 @@
+"""The rate and drainage bounds (config/converged.yaml, studies rate_bounds and drainage): how far the
+paper's 1 m/s curves are from the quasi-static limit, how much stiffer a closed cell is than one that
+lets water out while it is pressed, and which curve a texture-analyser experiment should be compared
+with. Stresses are the smoothed ones (the mean over +-0.01 strain, analysis/aggregate.py)."""
+import html
+
+import numpy as np
+import pandas as pd
+
+STRAINS = (0.05, 0.10)
+QUASI_STATIC_TOLERANCE = 0.05  # the two slowest speeds within 5 %: the quasi-static limit
+SPEED, LP = "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa"
+REAL_LP = 1e-12                 # m/(s Pa): the paper's compression L_p, a real cell's (model.md §5)
+REFERENCE_STRAIN = 0.10         # the mass lost and the drainage time are read at this strain
+TEXTURE_ANALYSER_RATE = (1e-3, 1e-1)  # 1/s: nominal strain rates of texture-analyser tests on tissue
+
+
+def rows_of(summary, study):
+    return summary[summary["studies"].str.split().apply(lambda s: study in s)]
+
+
+def stress(row, strain):
+    return row[f"smoothed_stress_kPa_at_{strain:.2f}"]
+
+
+def quasi_static_table(summary, study="rate_bounds"):
+    """Per dryness and strain: the stress at each plate speed and the change between the two slowest."""
+    rows = rows_of(summary, study)
+    out = []
+    for x in sorted(rows["dryness"].unique(), reverse=True):
+        at_x = rows[np.isclose(rows["dryness"], x)].sort_values(SPEED, ascending=False)
+        speeds = at_x[SPEED].to_numpy()
+        for strain in STRAINS:
+            values = [stress(r, strain) for _, r in at_x.iterrows()]
+            entry = {"X/X0": x, "strain": strain}
+            entry.update({f"{v:g} m/s [kPa]": s for v, s in zip(speeds, values)})
+            slowest, next_slowest = (values[-1], values[-2]) if len(values) > 1 else (np.nan, np.nan)
+            change = slowest / next_slowest - 1 if np.isfinite(slowest) and np.isfinite(next_slowest) else np.nan
+            entry["two slowest: change"] = change
+            entry["quasi-static (< 5 %)"] = ("" if not np.isfinite(change) else
+                                             "yes" if abs(change) < QUASI_STATIC_TOLERANCE else "no")
+            out.append(entry)
+    return pd.DataFrame(out)
+
+
+def drained_table(summary, study="drainage"):
+    """Per dryness and compression L_p: the stresses, their change against the closed cell (the paper's
+    L_p), and the share of the cell's water that left by strain 0.10."""
+    rows = rows_of(summary, study)
+    out = []
+    for x in sorted(rows["dryness"].unique(), reverse=True):
+        at_x = rows[np.isclose(rows["dryness"], x)].sort_values(LP)
+        closed = at_x.iloc[0]
+        for _, r in at_x.iterrows():
+            entry = {"X/X0": x, "compression L_p [m/(s Pa)]": r[LP]}
+            for strain in STRAINS:
+                entry[f"stress at {strain:.2f} [kPa]"] = stress(r, strain)
+                entry[f"change at {strain:.2f}"] = stress(r, strain) / stress(closed, strain) - 1
+            entry[f"water lost by {REFERENCE_STRAIN:.2f} [%]"] = 100 * r[f"mass_lost_at_{REFERENCE_STRAIN:.2f}"]
+            entry["drains like a real cell in [s]"] = real_drainage_time_s(r)
+            out.append(entry)
+    return pd.DataFrame(out)
+
+
+def real_drainage_time_s(row):
+    """The time over which a real cell (L_p = 1e-12) lets out the water this run let out by strain 0.10:
+    Eq 11's flow is L_p x (P - P_T) x area, so the same water takes the run's compression time x L_p / 1e-12."""
+    height_m = row["cell.diameter_um"] * 1e-6
+    time_s = REFERENCE_STRAIN * height_m / row[SPEED]
+    return time_s * row[LP] / REAL_LP
+
+
+def verdict_text(quasi_static, drained):
+    """Which curve a texture-analyser experiment should be compared with, from the two tables."""
+    parts = []
+    if not quasi_static.empty:
+        changes = quasi_static["two slowest: change"].dropna()
+        slowest = min(float(c.split(" ")[0]) for c in quasi_static.columns if c.endswith("m/s [kPa]"))
+        if len(changes) and (changes.abs() < QUASI_STATIC_TOLERANCE).all():
+            parts.append(f"Between the two slowest plates the stress changes by at most {100 * changes.abs().max():.1f} % "
+                         f"at every dryness and strain: the {slowest:g} m/s curves are the quasi-static limit to 5 %.")
+        elif len(changes):
+            worst = quasi_static.loc[changes.abs().idxmax()]
+            parts.append(f"Between the two slowest plates the stress still changes by up to "
+                         f"{100 * changes.abs().max():.1f} % (X/X0 = {worst['X/X0']:g}, strain {worst['strain']:.2f}): "
+                         f"the {slowest:g} m/s curves are not yet quasi-static, and the quasi-static stress lies beyond "
+                         f"them in the direction the slower plates move it.")
+    if not drained.empty:
+        parts.append(drainage_text(drained))
+    return "".join(f"<p>{html.escape(p)}</p>" for p in parts)
+
+
+def drainage_text(drained):
+    """Which drained curve stands for a texture-analyser test: the one whose water would take a real cell
+    as long to let out as such a test takes to reach strain 0.10."""
+    lp_column, time_column = "compression L_p [m/(s Pa)]", "drains like a real cell in [s]"
+    lost_column, change_column = f"water lost by {REFERENCE_STRAIN:.2f} [%]", f"change at {STRAINS[0]:.2f}"
+    slow, fast = (REFERENCE_STRAIN / r for r in TEXTURE_ANALYSER_RATE)
+    times = ", ".join(f"{t:.3g} s at L_p = {lp:g}" for lp, t in
+                      drained.groupby(lp_column)[time_column].first().items())
+    text = (f"A texture analyser takes tissue to strain {REFERENCE_STRAIN:.2f} in {fast:g}-{slow:g} s (nominal strain "
+            f"rates {TEXTURE_ANALYSER_RATE[0]:g}-{TEXTURE_ANALYSER_RATE[1]:g} per second). Eq 11's flow is L_p x "
+            f"overpressure x area, so a real cell (L_p = {REAL_LP:g}) lets out the water a run lets out by strain "
+            f"{REFERENCE_STRAIN:.2f} over that run's compression time x L_p / {REAL_LP:g}: {times}. ")
+    matching = drained[(drained[time_column] >= fast) & (drained[time_column] <= slow)]
+    most = drained.loc[drained[lost_column].idxmax()]
+    text += (f"The most drained cell lost {most[lost_column]:.2g} % of its water by strain {REFERENCE_STRAIN:.2f} "
+             f"(X/X0 = {most['X/X0']:g}), and its stress at strain {STRAINS[0]:.2f} changed by "
+             f"{100 * most[change_column]:+.0f} % against the closed cell. ")
+    if matching.empty:
+        return text + ("None of the drained runs drains like a texture-analyser test; the curve to compare with lies "
+                       "beyond the most drained one.")
+    lps = ", ".join(f"{lp:g}" for lp in sorted(matching[lp_column].unique()))
+    return text + (f"A texture-analyser experiment is therefore to be compared with the drained curves at L_p = {lps}, "
+                   f"at the slowest plate's distance from the quasi-static limit (the drained runs are pressed at 1 m/s "
+                   f"and keep the rate study's inertial part); the paper's closed cell is the undrained, dynamic bound.")
+
+
+def section(config, summary):
+    """The report's section on the bounds, or "" if the run has neither study."""
+    from analysis.report import frame_table
+    studies = config["studies"]
+    quasi_static = quasi_static_table(summary) if "rate_bounds" in studies else pd.DataFrame()
+    drained = drained_table(summary) if "drainage" in studies else pd.DataFrame()
+    if quasi_static.empty and drained.empty:
+        return ""
+    parts = ["<h2>Rate and drainage bounds</h2>",
+             "<p>The paper's plates move at 1 m/s, 1e4-1e6 times faster than a texture analyser, and at that "
+             "speed no water leaves a cell. These studies say how far the curves are from the slow and from the "
+             "drained limit (config/converged.yaml; docs/model-closures.md).</p>"]
+    if not quasi_static.empty:
+        parts += ["<h3>Toward the quasi-static limit (study rate_bounds)</h3>", frame_table(quasi_static)]
+    if not drained.empty:
+        parts += ["<h3>Drained compression (study drainage)</h3>", frame_table(drained)]
+    parts += ["<h3>Which curve to compare with a texture analyser</h3>", verdict_text(quasi_static, drained)]
+    return "".join(parts)

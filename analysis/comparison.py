@@ -1,0 +1,104 @@
+"""This run beside another (config `compare_with`, e.g. config/converged.yaml beside the paper's
+configuration in results/): every claim's verdict and value in both runs, which conclusions changed,
+and the other run's curves for the figures it names. The same case name means the same physical case in
+both runs (the numerics are in `base`, not in the names), so the other run's cases are found by name."""
+import html
+import os
+
+import numpy as np
+import pandas as pd
+
+
+KEY = "compare_with"
+
+
+def other(config):
+    """(the other run's output_dir, its label, this run's label), or None without `compare_with`."""
+    spec = config.get(KEY)
+    return (spec["output_dir"], spec["label"], spec["this_run"]) if spec else None
+
+
+def other_claims_file(config):
+    spec = other(config)
+    return f"{spec[0]}/tables/claims.csv" if spec else None
+
+
+def overlaid(config, fig):
+    """Whether the figure draws the other run's curves (dashed) beside this run's."""
+    return bool(config.get(KEY)) and fig in config[KEY].get("figures", [])
+
+
+def other_runs(config, names):
+    """{case: result path} of the other run's results for these cases, those that exist."""
+    spec = other(config)
+    if not spec:
+        return {}
+    paths = {n: f"{spec[0]}/runs/{n}.h5" for n in names}
+    return {n: p for n, p in paths.items() if os.path.exists(p)}
+
+
+def side_by_side(rows, other_rows):
+    """One row per claim of this run (rows: claims.evaluate) with the other run's value and verdict for the
+    same claim (matched by its text and figure), and whether the verdict changed."""
+    theirs = {(r["claim"], str(r["figure"])): r for r in other_rows}
+    out = []
+    for r in rows:
+        o = theirs.get((r["claim"], str(r["figure"])), {})
+        other_verdict = o.get("verdict", "not run")
+        out.append({"claim": r["claim"], "figure": r["figure"], "measured": r["measured"],
+                    "threshold": r["threshold"], "other_value": o.get("value", np.nan),
+                    "other_verdict": other_verdict, "value": r["value"], "verdict": r["verdict"],
+                    "changed": judged(other_verdict) and judged(r["verdict"]) and other_verdict != r["verdict"]})
+    return out
+
+
+def judged(verdict):
+    return verdict in ("agree", "disagree")
+
+
+def read_other_claims(path):
+    """The other run's claims table as rows, or None if that run has not been made."""
+    if not path or not os.path.exists(path):
+        return None
+    return pd.read_csv(path, keep_default_na=True).to_dict("records")
+
+
+def section(config, rows):
+    """The report's claims section for a run with `compare_with`: the two runs side by side and, in plain
+    words, which conclusions changed; or a note saying how to get the other run."""
+    from analysis.report import cell_text
+    out_dir, other_label, this_label = other(config)
+    other_rows = read_other_claims(other_claims_file(config))
+    if other_rows is None:
+        return (f"<p><b>The {html.escape(other_label)} has not been run</b> (no <code>"
+                f"{html.escape(other_claims_file(config))}</code>): run <code>snakemake --cores 2</code> and then "
+                f"this target again to see every claim under both configurations side by side.</p>")
+    table = side_by_side(rows, other_rows)
+    head = ("<table><tr><th>paper's claim</th><th>fig</th><th>measured</th><th>agree if</th>"
+            f"<th>{html.escape(other_label)}: value</th><th>verdict</th>"
+            f"<th>{html.escape(this_label)}: value</th><th>verdict</th><th>changed</th></tr>")
+    body = "".join(
+        f"<tr><td>{html.escape(r['claim'])}</td><td>{r['figure']}</td><td>{html.escape(r['measured'])}</td>"
+        f"<td>{html.escape(r['threshold'])}</td><td>{cell_text(r['other_value'])}</td>"
+        f"<td class='verdict'>{r['other_verdict']}</td><td>{cell_text(r['value'])}</td>"
+        f"<td class='verdict'><b>{r['verdict']}</b></td><td>{'yes' if r['changed'] else ''}</td></tr>"
+        for r in table)
+    return f"<p>Source of the other column: <code>{html.escape(out_dir)}</code>.</p>{head}{body}</table>" + \
+        changed_text(table, other_label, this_label)
+
+
+def changed_text(table, other_label, this_label):
+    """Which conclusions changed between the runs, in plain words, with their values."""
+    from analysis.report import cell_text
+    judged_both = [r for r in table if judged(r["verdict"]) and judged(r["other_verdict"])]
+    changed = [r for r in judged_both if r["changed"]]
+    head = (f"<h3>Which conclusions changed</h3><p>Of {len(table)} claims, {len(judged_both)} are judged in both "
+            f"runs; {len(changed)} changed verdict.")
+    if not changed:
+        return head + " Every conclusion judged in both runs stands under both configurations.</p>"
+    items = "".join(
+        f"<li>{html.escape(r['claim'])} (fig {r['figure']}): {r['other_verdict']} with the "
+        f"{html.escape(other_label)} ({html.escape(r['measured'])} = {cell_text(r['other_value'])}), "
+        f"{r['verdict']} with the {html.escape(this_label)} ({cell_text(r['value'])}; agree if "
+        f"{html.escape(r['threshold'])}).</li>" for r in changed)
+    return head + f"</p><ul>{items}</ul>"
