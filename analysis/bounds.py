@@ -12,7 +12,9 @@ QUASI_STATIC_TOLERANCE = 0.05  # the two slowest speeds within 5 %: the quasi-st
 SPEED, LP = "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa"
 REAL_LP = 1e-12                 # m/(s Pa): the paper's compression L_p, a real cell's (model.md §5)
 REFERENCE_STRAIN = 0.10         # the mass lost and the drainage time are read at this strain
-TEXTURE_ANALYSER_RATE = (1e-3, 1e-1)  # 1/s: nominal strain rates of texture-analyser tests on tissue
+# 1/s: nominal strain rates of texture-analyser tests on tissue, crosshead speeds of 0.1-20 mm/min on samples
+# about 10 mm high (a cell in the tissue strains as fast as the tissue).
+TEXTURE_ANALYSER_RATE = (1e-4, 3e-2)
 
 
 def rows_of(summary, study):
@@ -98,7 +100,7 @@ def drainage_text(drained):
     slow, fast = (REFERENCE_STRAIN / r for r in TEXTURE_ANALYSER_RATE)
     times = ", ".join(f"{t:.3g} s at L_p = {lp:g}" for lp, t in
                       drained.groupby(lp_column)[time_column].first().items())
-    text = (f"A texture analyser takes tissue to strain {REFERENCE_STRAIN:.2f} in {fast:g}-{slow:g} s (nominal strain "
+    text = (f"A texture analyser takes tissue to strain {REFERENCE_STRAIN:.2f} in {fast:.2g}-{slow:.4g} s (nominal strain "
             f"rates {TEXTURE_ANALYSER_RATE[0]:g}-{TEXTURE_ANALYSER_RATE[1]:g} per second). Eq 11's flow is L_p x "
             f"overpressure x area, so a real cell (L_p = {REAL_LP:g}) lets out the water a run lets out by strain "
             f"{REFERENCE_STRAIN:.2f} over that run's compression time x L_p / {REAL_LP:g}: {times}. ")
