@@ -24,10 +24,11 @@ def unloading_branch(compression):
     return compression.iloc[int(np.argmin(compression["plate_top_z_m"].to_numpy())) + 1:]
 
 
-def stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
-    """Stress when the nominal strain first reaches `strain` in compression (NaN if never)."""
+def value_at_strain(ts, strain, column="plate_stress_Pa"):
+    """A series' value (the plate stress unless named) when the nominal strain first reaches `strain` in
+    compression, interpolated between records (NaN if never)."""
     c = ts[ts["stage"] == 1]
-    e, s = c["nominal_strain"].to_numpy(), c[stress_column].to_numpy()
+    e, s = c["nominal_strain"].to_numpy(), c[column].to_numpy()
     above = np.nonzero(e >= strain)[0]
     if len(above) == 0:
         return np.nan
@@ -158,9 +159,9 @@ def summarise(ts):
             **load_unload(compression),
         })
         for e in STRAINS:
-            out[f"stress_kPa_at_{e:.2f}"] = stress_at_strain(ts, e) / 1e3
+            out[f"stress_kPa_at_{e:.2f}"] = value_at_strain(ts, e) / 1e3
             out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
-            out[f"mass_lost_at_{e:.2f}"] = (stress_at_strain(ts, e, "compression_mass_lost")
+            out[f"mass_lost_at_{e:.2f}"] = (value_at_strain(ts, e, "compression_mass_lost")
                                             if "compression_mass_lost" in ts else np.nan)
             out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
                                                        if "footprint_stress_Pa" in ts else np.nan)

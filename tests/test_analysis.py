@@ -127,11 +127,11 @@ def synthetic_series(stiffness_kPa, name):
     return pd.DataFrame(rows).assign(case=name)
 
 
-def test_stress_at_strain_interpolates_on_first_crossing():
+def test_value_at_strain_interpolates_on_first_crossing():
     ts = synthetic_series(500, "a")
-    assert aggregate.stress_at_strain(ts, 0.05) == pytest.approx(25e3)
-    assert aggregate.stress_at_strain(ts, 0.125) == pytest.approx(62.5e3)
-    assert np.isnan(aggregate.stress_at_strain(ts, 0.5))
+    assert aggregate.value_at_strain(ts, 0.05) == pytest.approx(25e3)
+    assert aggregate.value_at_strain(ts, 0.125) == pytest.approx(62.5e3)
+    assert np.isnan(aggregate.value_at_strain(ts, 0.5))
 
 
 def test_energy_verdicts_relate_the_residual_to_what_flowed():
@@ -199,7 +199,7 @@ def test_curve_verdicts_ignore_one_wiggle_that_decides_a_point_value():
     spiked[50] *= 1.27
     b = a.assign(case="b", plate_stress_Pa=spiked)
     series = pd.concat([a, b])
-    assert aggregate.stress_at_strain(b, 0.05) / aggregate.stress_at_strain(a, 0.05) == pytest.approx(1.27)
+    assert aggregate.value_at_strain(b, 0.05) / aggregate.value_at_strain(a, 0.05) == pytest.approx(1.27)
     curve_a, curve_b = claims.stress_curve(series, "a"), claims.stress_curve(series, "b")
     assert claims.relative_rms(curve_a, curve_b) < 0.02
     assert claims.mean_ratio(curve_a, curve_b) == pytest.approx(1.0, abs=0.01)
