@@ -146,6 +146,10 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
     parts = [markdown.markdown((root / "paper" / "report_intro.md").read_text())]
     parts.append(f"<p class='meta'>Generated {datetime.date.today().isoformat()} from {len(cases)} cases "
                  f"(output folder <code>{html.escape(config['output_dir'])}</code>).</p>")
+    if comparison.other(config):
+        other_dir, other_label, this_label = comparison.other(config)
+        parts.append(f"<p class='meta'>This run: the <b>{html.escape(this_label)}</b>, beside the "
+                     f"{html.escape(other_label)} (<code>{html.escape(other_dir)}</code>).</p>")
     parts.append(warnings_box(summary))
     parts.append(energy_box(summary))
     parts.append("<h2>The paper's claims and this run</h2>")

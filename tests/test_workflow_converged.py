@@ -26,6 +26,7 @@ def test_the_report_sets_the_claims_of_both_runs_side_by_side(converged_run, tin
     out, _ = converged_run
     page = (out / "report" / "index.html").read_text()
     assert "The claims under both configurations" in page and str(tiny_run) in page
+    assert "This run: the <b>converged configuration" in page
     assert "paper&#x27;s configuration (LJ, level 1): value" in page
     assert "converged configuration (pressure coupling, h0/dx 1.2, level 2): value" in page
     ours, theirs = (pd.read_csv(d / "tables" / "claims.csv") for d in (out, tiny_run))
