@@ -26,18 +26,21 @@ def stress(row, strain):
 
 
 def quasi_static_table(summary, study="rate_bounds"):
-    """Per dryness and strain: the stress at each plate speed and the change between the two slowest."""
+    """Per dryness and strain: the stress at each plate speed (fastest first; empty where a case is
+    missing) and the change between the two slowest speeds that ran."""
     rows = rows_of(summary, study)
+    speeds = sorted(rows[SPEED].unique(), reverse=True)
     out = []
     for x in sorted(rows["dryness"].unique(), reverse=True):
-        at_x = rows[np.isclose(rows["dryness"], x)].sort_values(SPEED, ascending=False)
-        speeds = at_x[SPEED].to_numpy()
+        at_x = rows[np.isclose(rows["dryness"], x)]
         for strain in STRAINS:
-            values = [stress(r, strain) for _, r in at_x.iterrows()]
             entry = {"X/X0": x, "strain": strain}
-            entry.update({f"{v:g} m/s [kPa]": s for v, s in zip(speeds, values)})
-            slowest, next_slowest = (values[-1], values[-2]) if len(values) > 1 else (np.nan, np.nan)
-            change = slowest / next_slowest - 1 if np.isfinite(slowest) and np.isfinite(next_slowest) else np.nan
+            for v in speeds:
+                at_v = at_x[np.isclose(at_x[SPEED], v)]
+                entry[f"{v:g} m/s [kPa]"] = stress(at_v.iloc[0], strain) if len(at_v) else np.nan
+            values = [entry[f"{v:g} m/s [kPa]"] for v in speeds]
+            reached = [value for value in values if np.isfinite(value)]
+            change = reached[-1] / reached[-2] - 1 if len(reached) > 1 else np.nan
             entry["two slowest: change"] = change
             entry["quasi-static (< 5 %)"] = ("" if not np.isfinite(change) else
                                              "yes" if abs(change) < QUASI_STATIC_TOLERANCE else "no")
@@ -47,17 +50,18 @@ def quasi_static_table(summary, study="rate_bounds"):
 
 def drained_table(summary, study="drainage"):
     """Per dryness and compression L_p: the stresses, their change against the closed cell (the paper's
-    L_p), and the share of the cell's water that left by strain 0.10."""
+    L_p, 1e-12; empty if it did not run), and the share of the cell's water that left by strain 0.10."""
     rows = rows_of(summary, study)
     out = []
     for x in sorted(rows["dryness"].unique(), reverse=True):
         at_x = rows[np.isclose(rows["dryness"], x)].sort_values(LP)
-        closed = at_x.iloc[0]
+        closed = at_x[np.isclose(at_x[LP], REAL_LP, rtol=1e-9, atol=0)]
         for _, r in at_x.iterrows():
             entry = {"X/X0": x, "compression L_p [m/(s Pa)]": r[LP]}
             for strain in STRAINS:
                 entry[f"stress at {strain:.2f} [kPa]"] = stress(r, strain)
-                entry[f"change at {strain:.2f}"] = stress(r, strain) / stress(closed, strain) - 1
+                entry[f"change at {strain:.2f}"] = (stress(r, strain) / stress(closed.iloc[0], strain) - 1
+                                                    if len(closed) else np.nan)
             entry[f"water lost by {REFERENCE_STRAIN:.2f} [%]"] = 100 * r[f"mass_lost_at_{REFERENCE_STRAIN:.2f}"]
             entry["drains like a real cell in [s]"] = real_drainage_time_s(r)
             out.append(entry)
@@ -107,8 +111,10 @@ def drainage_text(drained):
     matching = drained[(drained[time_column] >= fast) & (drained[time_column] <= slow)]
     most = drained.loc[drained[lost_column].idxmax()]
     text += (f"The most drained cell lost {most[lost_column]:.2g} % of its water by strain {REFERENCE_STRAIN:.2f} "
-             f"(X/X0 = {most['X/X0']:g}), and its stress at strain {STRAINS[0]:.2f} changed by "
-             f"{100 * most[change_column]:+.0f} % against the closed cell. ")
+             f"(X/X0 = {most['X/X0']:g})")
+    if np.isfinite(most[change_column]):
+        text += f", and its stress at strain {STRAINS[0]:.2f} changed by {100 * most[change_column]:+.0f} % against the closed cell"
+    text += ". "
     if matching.empty:
         return text + ("None of the drained runs drains like a texture-analyser test; the curve to compare with lies "
                        "beyond the most drained one.")

@@ -101,3 +101,16 @@ def test_an_overlaid_figure_draws_the_other_runs_curve_of_each_case_dashed_in_it
         assert np.asarray(d.get_ydata()) == pytest.approx(0.5 * np.asarray(s.get_ydata()))
     labels = [t.get_text() for t in figure.axes[-1].get_legend().get_texts()]
     assert "solid: converged" in labels and "dashed: paper's" in labels
+
+
+def test_a_speed_or_a_closed_cell_that_did_not_run_leaves_its_entries_empty():
+    summary = rate_summary({(1.0, 1): (120, 300), (1.0, 0.5): (110, 280), (0.1, 0.5): (40, 90), (0.1, 0.25): (38, 85)})
+    table = bounds.quasi_static_table(summary)
+    assert list(table.columns[2:5]) == ["1 m/s [kPa]", "0.5 m/s [kPa]", "0.25 m/s [kPa]"]
+    fresh, dried = table[table["X/X0"] == 1.0], table[table["X/X0"] == 0.1]
+    assert np.isnan(fresh["0.25 m/s [kPa]"]).all() and np.isnan(dried["1 m/s [kPa]"]).all()
+    assert fresh["two slowest: change"].to_numpy() == pytest.approx([110 / 120 - 1, 280 / 300 - 1])
+    assert dried["two slowest: change"].to_numpy() == pytest.approx([38 / 40 - 1, 85 / 90 - 1])
+    drained = bounds.drained_table(drained_summary().iloc[1:])  # the closed cell did not run
+    assert drained["change at 0.05"].isna().all() and (drained["water lost by 0.10 [%]"] > 0).all()
+    assert "lost 2 % of its water by strain 0.10 (X/X0 = 1). " in bounds.drainage_text(drained)
