@@ -163,6 +163,8 @@ def summarise(ts):
             out[f"smoothed_stress_kPa_at_{e:.2f}"] = smoothed_stress_at_strain(ts, e) / 1e3
             out[f"mass_lost_at_{e:.2f}"] = (value_at_strain(ts, e, "compression_mass_lost")
                                             if "compression_mass_lost" in ts else np.nan)
+            out[f"compression_time_us_at_{e:.2f}"] = (value_at_strain(ts, e, "compression_time_s") * 1e6
+                                                     if "compression_time_s" in ts else np.nan)
             out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
                                                        if "footprint_stress_Pa" in ts else np.nan)
         force_ratio, fluid_share, backstop_share = load_partition(compression)

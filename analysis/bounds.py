@@ -70,10 +70,9 @@ def drained_table(summary, study="drainage"):
 
 def real_drainage_time_s(row):
     """The time over which a real cell (L_p = 1e-12) lets out the water this run let out by strain 0.10:
-    Eq 11's flow is L_p x (P - P_T) x area, so the same water takes the run's compression time x L_p / 1e-12."""
-    height_m = row["cell.diameter_um"] * 1e-6
-    time_s = REFERENCE_STRAIN * height_m / row[SPEED]
-    return time_s * row[LP] / REAL_LP
+    Eq 11's flow is L_p x (P - P_T) x area, so the same water takes the run's time from the plates' start
+    to strain 0.10 x L_p / 1e-12."""
+    return row[f"compression_time_us_at_{REFERENCE_STRAIN:.2f}"] * 1e-6 * row[LP] / REAL_LP
 
 
 def verdict_text(quasi_static, drained):
@@ -133,7 +132,7 @@ def section(config, summary):
     if quasi_static.empty and drained.empty:
         return ""
     parts = ["<h2>Rate and drainage bounds</h2>",
-             "<p>The paper's plates move at 1 m/s, 1e4-1e6 times faster than a texture analyser, and at that "
+             "<p>The paper's plates move at 1 m/s, 1e3-1e6 times faster than a texture analyser, and at that "
              "speed no water leaves a cell. These studies say how far the curves are from the slow and from the "
              "drained limit (config/converged.yaml; docs/model-closures.md).</p>"]
     if not quasi_static.empty:
