@@ -9,6 +9,11 @@ STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
 LOAD_WINDOW = (0.05, 0.15)    # nominal strains over which the load partition is averaged
 
 
+def rows_of(summary, study):
+    """The summary's rows of the cases that belong to `study` (its `studies` column lists them)."""
+    return summary[summary["studies"].str.split().apply(lambda s: study in s)]
+
+
 def loading_branch(compression):
     """The compression records up to the top plate's lowest point: all of them, unless the plate turned
     back (compression.unload_at_strain); then the loading, without the unloading at the same strains."""

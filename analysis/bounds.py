@@ -7,6 +7,8 @@ import html
 import numpy as np
 import pandas as pd
 
+from analysis.aggregate import rows_of
+
 STRAINS = (0.05, 0.10)
 QUASI_STATIC_TOLERANCE = 0.05  # the two slowest speeds within 5 %: the quasi-static limit
 SPEED, LP = "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa"
@@ -15,10 +17,6 @@ REFERENCE_STRAIN = 0.10         # the mass lost and the drainage time are read a
 # 1/s: nominal strain rates of texture-analyser tests on tissue, crosshead speeds of 0.1-20 mm/min on samples
 # about 10 mm high (a cell in the tissue strains as fast as the tissue).
 TEXTURE_ANALYSER_RATE = (1e-4, 3e-2)
-
-
-def rows_of(summary, study):
-    return summary[summary["studies"].str.split().apply(lambda s: study in s)]
 
 
 def stress(row, strain):

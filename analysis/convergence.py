@@ -19,6 +19,7 @@ import pandas as pd
 
 from analysis.matrix import target_of
 from analysis import report
+from analysis.aggregate import rows_of
 
 # (summary column, heading): what each case reports.
 METRICS = [("smoothed_stress_kPa_at_0.05", "stress at strain 0.05 [kPa]"),
@@ -83,7 +84,7 @@ def observed_order(f1, f2, f3, r12, r23):
 def study_table(config, study, summary):
     """One row per case of the study, grouped, finest last, with the changes from the next coarser."""
     axis = refined_axis(config, study)
-    rows = summary[summary["studies"].str.split().apply(lambda s: study in s)].copy()
+    rows = rows_of(summary, study).copy()
     rows["refinement"] = [refinement(r, axis) for _, r in rows.iterrows()]
     group_axes = [a for a in GROUPING_AXES if a in rows.columns]
     out = []
@@ -118,7 +119,7 @@ def comparisons(config, summary, target="convergence"):
     for study in config["studies"]:
         if target_of(config, study) != target or refined_axis(config, study):
             continue
-        rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
+        rows = rows_of(summary, study)
         axes = [a for a in GROUPING_AXES if a in config["studies"][study]["vary"]]
         out[study] = rows[axes + [m for m, _ in METRICS]].sort_values(axes, ascending=[True, False][:len(axes)])
     return out

@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 
 from analysis import claims
+from analysis.aggregate import rows_of
 
 BAND_PERCENTILES = (10, 90)
 GRID_POINTS = 200
@@ -71,7 +72,7 @@ def ensemble_table(config, summary, study, reference=None):
     mean, band and coefficient of variation; `reference`: the homogeneous cells' summary rows, whose
     value at the same dryness stands beside the mean."""
     axes = list(config["studies"][study]["vary"])
-    rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
+    rows = rows_of(summary, study)
     out = []
     for key, group in members_of(rows, axes).items():
         ensemble = {a: v for a, v in zip([a for a in axes if a != SEED_AXIS], key)}
@@ -98,7 +99,7 @@ def _mean_curve(series, cases):
 def ensemble_claims(config, summary, series, study="ensemble", reference=None):
     """The paper's claims an ensemble of fresh and X/X0 = 0.1 cells covers (Figs 7 and 14), judged on the
     ensemble's mean curves; the band is that of the same measure on each seed's pair of cells."""
-    rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
+    rows = rows_of(summary, study)
     by_dryness = {x: g for x, g in rows.groupby("dryness")}
     if not {1.0, 0.1} <= set(by_dryness):
         return pd.DataFrame()
@@ -144,7 +145,7 @@ def _claim_row(claim, figure, measured, on_mean, per_member, homogeneous, agree,
 def band_growth(config, summary, study="ensemble_spread", strains=("0.05", "0.10")):
     """How the band grows with the coefficient of variation: per value of the spread axis and strain, the
     mean stress, the band's width over it, and the members' own coefficient of variation."""
-    rows = summary[summary["studies"].str.split().apply(lambda s: study in s)]
+    rows = rows_of(summary, study)
     out = []
     for spread, group in rows.groupby("spread"):
         for strain in strains:

@@ -8,10 +8,7 @@ import numpy as np
 import pandas as pd
 
 from analysis import ensembles, report
-
-
-def rows_of(summary, study):
-    return summary[summary["studies"].str.split().apply(lambda s: study in s)]
+from analysis.aggregate import rows_of
 
 
 def load_unload_table(summary, study="load_unload"):

@@ -7,7 +7,7 @@ import pytest
 
 from analysis import matrix
 from analysis.figures import render
-from conftest import CI, TINY, run_workflow, workflow_config
+from conftest import CI, run_workflow, workflow_config
 
 pytestmark = pytest.mark.slow
 CONVERGED = CI + ["config/converged.yaml", "tests/tiny_matrix.yaml", "tests/converged_reduced.yaml"]
