@@ -186,7 +186,7 @@ TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
   std::vector<char> intact = {1};
   std::vector<double> peak = {0.0};
   Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 4);
-  EXPECT_EQ(add_cell_contact_forces(x, wall_wall, bonds, law, intact, peak, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, wall_wall, bonds, law, PeriodicBox{}, intact, peak, force), 0);
   EXPECT_NEAR(force(0, 0), -1e3 * 1e-6, 1e-15);  // k_c (g - r), pushing 0 away from 1 (along -x)
   EXPECT_NEAR(force.col(0).norm(), 1e-3, 1e-15);
   const double r = (x.col(3) - x.col(2)).norm();
@@ -203,16 +203,16 @@ TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
   const PairList no_contact{{0, 0, 0, 0, 0}, {}, 0, 0};
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.54e-6, 0);  // tension 2e3 x 1.04 um = 2.08 mN
   force.setZero();
-  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, PeriodicBox{}, intact, peak, force), 0);
   EXPECT_EQ(intact[0], 1);
   EXPECT_NEAR(force(1, 2), 2.08e-3, 1e-12);
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.56e-6, 0);  // 2.12 mN
   force.setZero();
-  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 1);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, PeriodicBox{}, intact, peak, force), 1);
   EXPECT_EQ(intact[0], 0);
   EXPECT_EQ(force.norm(), 0.0);
   x.col(3) = x.col(2) + Eigen::Vector3d(0, 7.0e-6, 0);  // back within strength: stays broken
-  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, PeriodicBox{}, intact, peak, force), 0);
   EXPECT_EQ(force.norm(), 0.0);
 }
 
@@ -256,14 +256,14 @@ TEST(LamellaLaw, ABondThatSoftensPullsBothWallsEquallyAndSeparatesAtItsBreakOpen
   for (double opening : {0.02e-6, 0.3e-6, 0.6e-6, 0.99e-6}) {
     x.col(1) = Eigen::Vector3d(0, 0, 6e-6 + opening);
     Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 2);
-    EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 0) << opening;
+    EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, PeriodicBox{}, intact, peak, force), 0) << opening;
     EXPECT_EQ(force.col(0), -force.col(1));
     EXPECT_NEAR(force(2, 0), law.lamella.tension_N(opening, opening), 1e-18) << opening;
     EXPECT_GT(force(2, 0), 0.0);  // pulls 0 toward 1 (+z)
   }
   x.col(1) = Eigen::Vector3d(0, 0, 7.01e-6);
   Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 2);
-  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, intact, peak, force), 1);
+  EXPECT_EQ(add_cell_contact_forces(x, no_contact, bonds, law, PeriodicBox{}, intact, peak, force), 1);
   EXPECT_EQ(intact[0], 0);
   EXPECT_EQ(force.norm(), 0.0);
 }

@@ -18,6 +18,11 @@ enum DensityUpdate : Choice { kDensityAuto = 0, kDensityKick = 1, kDensityDrift 
 // tissue.packing (model.md §10): where the cells' centres sit.
 enum Packing : Choice { kCubicPacking = 0, kClosePacking = 1 };
 
+// tissue.lateral (model.md §10b): a cluster with free sides, or a slab periodic in x and y whose period
+// follows zero lateral stress in drying, and in compression is held (confined) or keeps following it
+// (unconfined).
+enum LateralBoundary : Choice { kLateralFree = 0, kLateralConfined = 1, kLateralUnconfined = 2 };
+
 struct Params {
   // cell geometry and particles (model.md §1)
   double diameter_m = 0;                // D0 = 2R
@@ -31,6 +36,8 @@ struct Params {
   // tissue of cells (model.md §10); 1 x 1 x 1 is the single cell of the paper
   std::int64_t cells_x = 1, cells_y = 1, cells_z = 1;  // cells along each axis (layers along z)
   Choice packing = kCubicPacking;
+  Choice lateral = kLateralFree;
+  double period_viscosity_Pa_s = 0;     // the period strains at -(lateral stress) / this while it follows
   double centre_distance_over_diameter = 0;  // centre distance of touching neighbours / D0
   double diameter_spread = 0;           // standard deviation of the cells' diameters / D0
   std::int64_t tissue_seed = 0;         // of the diameters' spread

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 
+#include "core/periodic_box.hpp"
+
 namespace cellsim {
 
 enum class Stage : int { Drying = 0, Compression = 1 };
@@ -37,6 +39,10 @@ struct Plates {
   double contact_height_m = 0;    // H_c: cell height when compression starts
   double footprint_m2 = 0;        // area of the wall's outline seen from above when compression starts
   double first_contact_top_z_m = 0;  // top plate height at first contact (NaN before)
+  // The strain gauge's references when compression starts (engine/strain_gauge.hpp): its length, and
+  // each layer's mean cell height.
+  double gauge_length_m = 0;
+  std::vector<double> start_layer_height_m;
   // Load-unload (compression.unload_at_strain): from unload_start_time_s on, the top plate moves back up
   // (physics/plate_motion.hpp).
   bool unloading = false;
@@ -63,6 +69,7 @@ struct State {
   FluidParticles fluid;
   WallParticles wall;
   Plates plates;
+  PeriodicBox box;  // a periodic tissue's lateral period (model.md §10b); none for a cell or a cluster
   std::vector<double> start_volume_ratio;  // per cell: sum(m/rho) / enclosed volume when compression started
   std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
   std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
@@ -78,6 +85,7 @@ struct State {
   // Diagnostics of the last force evaluation (recorded, not state to integrate).
   double wall_tension_N_m = 0;    // mean membrane tension: sum(tension x length) / (2 area)
   double wall_pressure_Pa = 0;    // outward LJ push on the wall along its normals / area
+  double lateral_stress_x_Pa = 0, lateral_stress_y_Pa = 0;  // a periodic slab's, tension positive (model.md §10b)
 };
 
 }  // namespace cellsim

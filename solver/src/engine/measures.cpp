@@ -1,5 +1,6 @@
 #include "engine/measures.hpp"
 
+#include "engine/strain_gauge.hpp"
 #include "geometry/hull.hpp"
 #include "physics/plates.hpp"
 
@@ -24,10 +25,30 @@ void measure_cells(const State& s, const CellRanges& cells, const WallSurface& s
     r.cell_mean_pressure_Pa.push_back(pressure_sum / static_cast<double>(cells.fluid_count(c)));
     r.cell_fluid_mass_kg.push_back(f.m.segment(cells.fluid[c], cells.fluid_count(c)).sum());
   }
+  const LayerHeights heights = layer_heights(s.wall.x, cells);
+  r.cell_centroid_z_m = heights.cell_centroid_z_m;
+  r.cell_wall_height_m = heights.cell_height_m;
+  r.layer_centroid_z_m = heights.layer_centroid_z_m;
+  r.layer_height_strain.assign(heights.layer_height_m.size(), kNaN);
+  r.gauge_strain = kNaN;
+  r.period_x_m = r.period_y_m = r.lateral_stress_Pa = kNaN;
+  if (s.box.periodic()) {
+    r.period_x_m = s.box.length_x_m;
+    r.period_y_m = s.box.length_y_m;
+    r.lateral_stress_Pa = 0.5 * (s.lateral_stress_x_Pa + s.lateral_stress_y_Pa);
+  }
+  if (s.plates.active) {  // strains from the layers' state when compression started
+    for (std::size_t k = 0; k < r.layer_height_strain.size() && k < s.plates.start_layer_height_m.size(); ++k)
+      r.layer_height_strain[k] = 1.0 - heights.layer_height_m[k] / s.plates.start_layer_height_m[k];
+    r.gauge_strain = 1.0 - gauge_length_m(heights.layer_centroid_z_m) / s.plates.gauge_length_m;
+  }
   r.lamella_intact = 0;
   for (char intact : s.lamella_intact) r.lamella_intact += intact;
   r.tissue_volume_m3 = r.porosity = kNaN;
-  if (cells.count() > 1) {
+  if (s.box.periodic()) {  // one period of the slab, between its lowest and highest wall particle
+    r.tissue_volume_m3 = s.box.area_m2() * (s.wall.x.row(2).maxCoeff() - s.wall.x.row(2).minCoeff());
+    r.porosity = 1.0 - surface.volume_m3 / r.tissue_volume_m3;
+  } else if (cells.count() > 1) {
     r.tissue_volume_m3 = convex_hull_volume(s.wall.x);
     r.porosity = 1.0 - surface.volume_m3 / r.tissue_volume_m3;
   }
@@ -85,7 +106,7 @@ const std::vector<Quantity>& quantities() {
       {"nominal_strain", "1", "(H_c - H) / H_c, H_c the cell height when compression starts",
        &Record::nominal_strain},
       {"plate_strain", "1", "top-plate travel since first contact / H_c", &Record::plate_strain},
-      {"plate_stress_Pa", "Pa", "F_top / (plate length x width)", &Record::plate_stress_Pa},
+      {"plate_stress_Pa", "Pa", "F_top / (plate length x width); a periodic slab's: F_top / its lateral period's area", &Record::plate_stress_Pa},
       {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
       {"contact_stress_Pa", "Pa", "F_top / top contact area (NaN without contact)", &Record::contact_stress_Pa},
       {"footprint_stress_Pa", "Pa",
@@ -93,8 +114,19 @@ const std::vector<Quantity>& quantities() {
        &Record::footprint_stress_Pa},
       {"lamella_intact", "1", "middle-lamella bonds between cells not yet broken (0 for one cell)",
        &Record::lamella_intact},
-      {"tissue_volume_m3", "m^3", "volume of the convex hull of every wall particle (a tissue's; NaN for one cell)",
+      {"tissue_volume_m3", "m^3", "volume of the convex hull of every wall particle (a tissue's; NaN for one cell); a periodic "
+       "slab's: the period's area x the height of its walls",
        &Record::tissue_volume_m3},
+      {"gauge_strain", "1",
+       "the interior layers' strain 1 - G / G_c, G between the centroid planes of layers 1 and n-2 (four layers "
+       "or more; else of the bottom and top layer), G_c when compression started; NaN for one layer and before",
+       &Record::gauge_strain},
+      {"period_x_m", "m", "a periodic slab's lateral period along x (NaN for a cell or a cluster)", &Record::period_x_m},
+      {"period_y_m", "m", "a periodic slab's lateral period along y (NaN for a cell or a cluster)", &Record::period_y_m},
+      {"lateral_stress_Pa", "Pa",
+       "a periodic slab's lateral stress, tension positive: the mean of its x and y parts, -(virial of the forces "
+       "between cells across the period) / (period area x height) (NaN for a cell or a cluster)",
+       &Record::lateral_stress_Pa},
       {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
        &Record::porosity},
       // The energy account (docs/model.md): stored energies, then what the other terms put in since t = 0.
@@ -149,6 +181,19 @@ const std::vector<CellQuantity>& cell_quantities() {
       {"volume_m3", "m^3", "each cell's enclosed volume (its own wall's signed tetrahedra)", &Record::cell_volume_m3},
       {"mean_pressure_Pa", "Pa", "each cell's mean fluid EOS pressure (Eq 7)", &Record::cell_mean_pressure_Pa},
       {"fluid_mass_kg", "kg", "each cell's fluid mass (Eq 11)", &Record::cell_fluid_mass_kg},
+      {"centroid_z_m", "m", "each cell's wall centroid height", &Record::cell_centroid_z_m},
+      {"height_m", "m", "each cell's height: max z - min z of its wall particles", &Record::cell_wall_height_m},
+  };
+  return q;
+}
+
+const std::vector<CellQuantity>& layer_quantities() {
+  static const std::vector<CellQuantity> q = {
+      {"centroid_z_m", "m", "each layer's mean of its cells' wall centroid heights (model.md §10c)",
+       &Record::layer_centroid_z_m},
+      {"height_strain", "1",
+       "each layer's 1 - (mean height of its cells) / (the same when compression started); NaN before",
+       &Record::layer_height_strain},
   };
   return q;
 }
@@ -246,7 +291,8 @@ Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, co
   const double hc = pl.contact_height_m;
   r.nominal_strain = nominal_strain(hc, r.cell_height_m);
   r.plate_strain = std::isnan(pl.first_contact_top_z_m) ? 0.0 : (pl.first_contact_top_z_m - pl.top_z_m) / hc;
-  r.plate_stress_Pa = pl.force_top_N / (p.plate_length_m * p.plate_width_m);
+  // over the plate's area, or a periodic slab's period (model.md §10b)
+  r.plate_stress_Pa = pl.force_top_N / (s.box.periodic() ? s.box.area_m2() : p.plate_length_m * p.plate_width_m);
   r.section_stress_Pa = pl.force_top_N / (M_PI * r.equatorial_radius_m * r.equatorial_radius_m);
   r.footprint_stress_Pa = pl.force_top_N / pl.footprint_m2;
   r.contact_area_top_m2 = contact_area_top;
@@ -265,6 +311,8 @@ std::string output_reference_markdown() {
   for (const auto& q : quantities()) s << "| `/timeseries/" << q.name << "` | " << q.unit << " | " << q.definition << " |\n";
   for (const auto& q : cell_quantities())
     s << "| `/cells/" << q.name << "` | " << q.unit << " | " << q.definition << ", records x cells |\n";
+  for (const auto& q : layer_quantities())
+    s << "| `/layers/" << q.name << "` | " << q.unit << " | " << q.definition << ", records x layers |\n";
   return s.str();
 }
 

@@ -27,6 +27,8 @@ struct Record {
   double pressure_load_N, load_fluid_N, load_wall_N, load_backstop_N;
   double nominal_strain, plate_strain, plate_stress_Pa, section_stress_Pa, contact_stress_Pa, footprint_stress_Pa;
   double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
+  double gauge_strain;  // the interior layers' strain (strain_gauge.hpp)
+  double period_x_m, period_y_m, lateral_stress_Pa;  // a periodic slab's (model.md §10b)
   // The energy account (energy_account.hpp): stored energies, the flows since t = 0, the residual.
   double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
   double coupling_energy_J, plate_energy_J, stored_energy_J;
@@ -35,7 +37,9 @@ struct Record {
   double wall_plastic_strain_mean, wall_plastic_strain_max;  // delta_p / l0 over the bonds (wall_plasticity.hpp)
   double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
-  std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg;
+  std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg, cell_centroid_z_m, cell_wall_height_m;
+  // Each layer's (model.md §10c), from the bottom.
+  std::vector<double> layer_centroid_z_m, layer_height_strain;
 };
 
 struct Quantity {
@@ -46,14 +50,16 @@ struct Quantity {
 };
 const std::vector<Quantity>& quantities();
 
-// The per-cell series: one value per cell in each record (written as records x cells).
+// The per-cell series: one value per cell in each record (written as records x cells), and the
+// per-layer series, written the same way under /layers.
 struct CellQuantity {
-  std::string name;  // dataset name under /cells
+  std::string name;  // dataset name under /cells (or /layers)
   std::string unit;
   std::string definition;
   std::vector<double> Record::*member;
 };
 const std::vector<CellQuantity>& cell_quantities();
+const std::vector<CellQuantity>& layer_quantities();
 
 // H: max z - min z of the wall particles; the nominal strain (H_c - H) / H_c (model.md §8).
 double cell_height_m(const Eigen::Matrix3Xd& wall_x);

@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/containment.hpp"
+#include "engine/strain_gauge.hpp"
 #include "geometry/hull.hpp"
 #include "parallel/cell_blocks.hpp"
 #include "parallel/threads.hpp"
@@ -218,6 +219,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   s_.wall.x = tissue.wall_x;
   s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
   s_.wall.mass_kg = tissue.wall_mass_kg;
+  s_.box = tissue.box;
   s_.lamella_intact.assign(lamella_.size(), 1);
   s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
   s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
@@ -228,7 +230,8 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   largest_viscosity_Pa_s_ = fluid_viscosity_Pa_s_.empty()
                                 ? p.viscosity_Pa_s
                                 : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
-  if (cells_.count() > 1) neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
+  if (cells_.count() > 1)
+    neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m, tissue.box);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
@@ -278,6 +281,7 @@ void Simulation::step() {
   check_time_step();
   kick(0.5 * p_.dt_s);
   drift(p_.dt_s);
+  follow_lateral_stress(p_.dt_s);
   timer_.lap(Phase::Integration);
   compute_rates(drift_density_ ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
@@ -406,9 +410,37 @@ void Simulation::wall_terms() {
 // Contact and middle lamella between the walls of different cells (cell_contact.hpp); none for one cell.
 void Simulation::cell_contact_terms() {
   if (cells_.count() == 1) return;
-  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.lamella_intact,
-                          s_.lamella_peak_opening_m, wall_force_);
+  Eigen::Vector2d period_virial_J;
+  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.box, s_.lamella_intact,
+                          s_.lamella_peak_opening_m, wall_force_, &period_virial_J);
+  if (s_.box.periodic()) {  // -virial / volume of one period of the slab: tension positive
+    const double volume_m3 = s_.box.area_m2() * cell_height_m(s_.wall.x);
+    s_.lateral_stress_x_Pa = -period_virial_J.x() / volume_m3;
+    s_.lateral_stress_y_Pa = -period_virial_J.y() / volume_m3;
+  }
   timer_.lap(Phase::CellContact);
+}
+
+// A periodic slab's period follows zero lateral stress (in drying, and in compression if unconfined):
+// it strains at -sigma / eta_p along x and y, and each cell moves with it, whole, as its centroid maps
+// (model.md §10b). The cells keep their shape and velocities; only the distances between them change.
+void Simulation::follow_lateral_stress(double dt) {
+  if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.lateral != kLateralUnconfined)) return;
+  const Eigen::Vector2d strain(-s_.lateral_stress_x_Pa / p_.period_viscosity_Pa_s * dt,
+                               -s_.lateral_stress_y_Pa / p_.period_viscosity_Pa_s * dt);
+  double moved_m = 0;
+  for (int c = 0; c < cells_.count(); ++c) {
+    const Eigen::Vector2d centroid = s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).topRows<2>().rowwise().mean();
+    const Eigen::Vector2d by = strain.cwiseProduct(centroid);
+    s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).topRows<2>().colwise() += by;
+    s_.fluid.x.middleCols(cells_.fluid[c], cells_.fluid_count(c)).topRows<2>().colwise() += by;
+    moved_m = std::max(moved_m, by.norm());
+  }
+  s_.box.length_x_m *= 1.0 + strain.x();
+  s_.box.length_y_m *= 1.0 + strain.y();
+  neighbours_.set_period(s_.box);
+  // a pair across the period also sees the period's change
+  moved_since_lists_m_ += moved_m + strain.cwiseAbs().maxCoeff() * std::max(s_.box.length_x_m, s_.box.length_y_m);
 }
 
 // The pressure coupling's backstop range follows h (Eq 6) as the fluid spacing does; its pressure is K.
@@ -632,12 +664,16 @@ void Simulation::check_containment() const {
                              (tissue ? "the wall of its cell " + std::to_string(c) : std::string("the cell wall")) +
                              " at " + at(s_.fluid.x.col(outside)));
   }
-  // Walls of different cells must not pass through each other (model.md §10).
+  // Walls of different cells must not pass through each other (model.md §10); in a periodic tissue each
+  // wall particle is taken to its image nearest the other cell's centroid (model.md §10b).
+  std::vector<Eigen::Vector3d> centroid;
+  for (int c = 0; c < cells_.count(); ++c)
+    centroid.push_back(s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).rowwise().mean());
   for (int a = 0; a < cells_.count(); ++a)
     for (int b = 0; b < cells_.count(); ++b) {
-      if (a == b || !walls[a].box_overlaps(walls[b])) continue;
+      if (a == b || (!s_.box.periodic() && !walls[a].box_overlaps(walls[b]))) continue;
       for (Eigen::Index k = cells_.wall[a]; k < cells_.wall[a + 1]; ++k)
-        if (walls[b].contains(s_.wall.x.col(k)))
+        if (walls[b].contains(centroid[b] + s_.box.nearest_image(s_.wall.x.col(k) - centroid[b])))
           throw NumericalFailure(where() + ": wall particle " + std::to_string(k) + " of cell " + std::to_string(a) +
                                  " is inside cell " + std::to_string(b) + " at " + at(s_.wall.x.col(k)) +
                                  " (the walls interpenetrate)");
@@ -663,6 +699,9 @@ void Simulation::start_compression() {
   plates.footprint_m2 = convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");
   plates.unloading = false;
+  const LayerHeights heights = layer_heights(s_.wall.x, cells_);
+  plates.gauge_length_m = gauge_length_m(heights.layer_centroid_z_m);
+  plates.start_layer_height_m = heights.layer_height_m;
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
   compute_rates();
@@ -677,6 +716,10 @@ void Simulation::restore(const State& saved) {
                      std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
                      std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
                      std::to_string(s_.lamella_intact.size()));
+  if (saved.box.periodic() != s_.box.periodic())
+    throw InputError(std::string("saved state is of a ") + (saved.box.periodic() ? "periodic" : "non-periodic") +
+                     " tissue; the case builds a " + (s_.box.periodic() ? "periodic" : "non-periodic") +
+                     " one (tissue.lateral)");
   s_ = saved;
   if (s_.bond_plastic_elongation_m.empty())  // saved before the wall could yield
     s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);

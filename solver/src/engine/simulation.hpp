@@ -101,6 +101,7 @@ class Simulation {
   void mass_transfer();
   void wall_terms();
   void cell_contact_terms();
+  void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
   void wall_fluid_terms(bool weights_fresh);
   PressureCouplingLaw pressure_coupling_law() const;
   void plate_terms();

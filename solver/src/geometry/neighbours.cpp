@@ -14,20 +14,31 @@ double moved2(const Eigen::Matrix3Xd& now, const Eigen::Matrix3Xd& then, Eigen::
   return (now.middleCols(begin, end - begin) - then.middleCols(begin, end - begin)).colwise().squaredNorm().maxCoeff();
 }
 
-// Uniform grid over a bounding box; particles binned by counting sort (deterministic order).
+// Uniform grid over a bounding box; particles binned by counting sort (deterministic order). Along a
+// periodic axis of `box` the grid covers one period and wraps around.
 constexpr double kMaxCellsPerSide = 200;
 
 struct CellGrid {
   Eigen::Vector3d origin;
-  double size;
+  Eigen::Vector3d size;
   std::array<int, 3> dims;
+  std::array<double, 3> period{0, 0, 0};  // > 0: the axis wraps
   std::vector<int> start;  // per cell, into order
   std::vector<int> order;  // particle indices grouped by cell
 
-  CellGrid(const Eigen::Matrix3Xd& x, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double cell_size)
-      : origin(lo), size(std::max(cell_size, (hi - lo).maxCoeff() / kMaxCellsPerSide)) {
+  CellGrid(const Eigen::Matrix3Xd& x, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double cell_size,
+           const PeriodicBox& box = {})
+      : origin(lo), size(Eigen::Vector3d::Constant(std::max(cell_size, (hi - lo).maxCoeff() / kMaxCellsPerSide))) {
     // Larger cells still cover the cut-off; the cap keeps a stray particle from allocating a huge grid.
-    for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>(std::floor((hi[d] - lo[d]) / size)) + 1);
+    for (int d = 0; d < 3; ++d) dims[d] = std::max(1, static_cast<int>(std::floor((hi[d] - lo[d]) / size[d])) + 1);
+    period[0] = box.length_x_m;
+    period[1] = box.length_y_m;
+    for (int d = 0; d < 2; ++d)
+      if (period[d] > 0) {  // whole cells of at least the cut-off to a period
+        origin[d] = 0;
+        dims[d] = std::clamp(static_cast<int>(std::floor(period[d] / cell_size)), 1, static_cast<int>(kMaxCellsPerSide));
+        size[d] = period[d] / dims[d];
+      }
     std::vector<int> cell_of(static_cast<std::size_t>(x.cols()));
     start.assign(static_cast<std::size_t>(dims[0] * dims[1] * dims[2]) + 1, 0);
     for (Eigen::Index i = 0; i < x.cols(); ++i) {
@@ -45,9 +56,26 @@ struct CellGrid {
 
   std::array<int, 3> coords(const Eigen::Vector3d& p) const {
     std::array<int, 3> c{};
-    for (int d = 0; d < 3; ++d)
-      c[d] = std::clamp(static_cast<int>(std::floor((p[d] - origin[d]) / size)), 0, dims[d] - 1);
+    for (int d = 0; d < 3; ++d) {
+      const double u = period[d] > 0 ? p[d] - period[d] * std::floor(p[d] / period[d]) : p[d] - origin[d];
+      c[d] = std::clamp(static_cast<int>(std::floor(u / size[d])), 0, dims[d] - 1);
+    }
     return c;
+  }
+
+  // The grid rows along axis d next to row c, each once (a period of fewer than three rows: all of them).
+  int near_rows(int c, int d, std::array<int, 3>& rows) const {
+    if (period[d] > 0) {
+      if (dims[d] < 3) {
+        for (int r = 0; r < dims[d]; ++r) rows[static_cast<std::size_t>(r)] = r;
+        return dims[d];
+      }
+      rows = {(c + dims[d] - 1) % dims[d], c, (c + 1) % dims[d]};
+      return 3;
+    }
+    int n = 0;
+    for (int r = std::max(c - 1, 0); r <= std::min(c + 1, dims[d] - 1); ++r) rows[static_cast<std::size_t>(n++)] = r;
+    return n;
   }
   int cell_index(const Eigen::Vector3d& p) const {
     const auto c = coords(p);
@@ -58,21 +86,16 @@ struct CellGrid {
   template <class Visit>
   void for_each_near(const Eigen::Vector3d& p, Visit&& visit) const {
     const auto c = coords(p);
-    for (int dz = -1; dz <= 1; ++dz) {
-      const int z = c[2] + dz;
-      if (z < 0 || z >= dims[2]) continue;
-      for (int dy = -1; dy <= 1; ++dy) {
-        const int y = c[1] + dy;
-        if (y < 0 || y >= dims[1]) continue;
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int xcell = c[0] + dx;
-          if (xcell < 0 || xcell >= dims[0]) continue;
-          const int cell = (z * dims[1] + y) * dims[0] + xcell;
+    std::array<int, 3> xs{}, ys{}, zs{};
+    const int nx = near_rows(c[0], 0, xs), ny = near_rows(c[1], 1, ys), nz = near_rows(c[2], 2, zs);
+    for (int iz = 0; iz < nz; ++iz)
+      for (int iy = 0; iy < ny; ++iy)
+        for (int ix = 0; ix < nx; ++ix) {
+          const int cell = (zs[static_cast<std::size_t>(iz)] * dims[1] + ys[static_cast<std::size_t>(iy)]) * dims[0] +
+                           xs[static_cast<std::size_t>(ix)];
           for (int k = start[static_cast<std::size_t>(cell)]; k < start[static_cast<std::size_t>(cell) + 1]; ++k)
             visit(order[static_cast<std::size_t>(k)]);
         }
-      }
-    }
   }
 };
 
@@ -130,10 +153,10 @@ void list_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, 
   }
 }
 
-// Wall particles l > k of other cells within sqrt(ww2) of k, for every k (one thread: built only for
-// tissues, and only when the lists are).
+// Wall particles l > k of other cells within sqrt(ww2) of k (their nearest images), for every k (one
+// thread: built only for tissues, and only when the lists are).
 void list_wall_wall(const Eigen::Matrix3Xd& wall_x, const CellGrid& grid, double ww2, const int* cell_of_wall,
-                    PairList& list) {
+                    const PeriodicBox& box, PairList& list) {
   list.offset.assign(1, 0);
   list.index.clear();
   std::vector<int> row;
@@ -141,7 +164,8 @@ void list_wall_wall(const Eigen::Matrix3Xd& wall_x, const CellGrid& grid, double
     const Eigen::Vector3d xk = wall_x.col(k);
     row.clear();
     grid.for_each_near(xk, [&](int l) {
-      if (l > k && cell_of_wall[l] != cell_of_wall[k] && (wall_x.col(l) - xk).squaredNorm() < ww2) row.push_back(l);
+      if (l > k && cell_of_wall[l] != cell_of_wall[k] && box.nearest_image(wall_x.col(l) - xk).squaredNorm() < ww2)
+        row.push_back(l);
     });
     std::sort(row.begin(), row.end());
     list.index.insert(list.index.end(), row.begin(), row.end());
@@ -177,10 +201,12 @@ void join_parts(const std::vector<PairList>& parts, int threads, int which, Pair
 
 }  // namespace
 
-void NeighbourLists::set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m) {
+void NeighbourLists::set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m,
+                               const PeriodicBox& box) {
   cell_of_fluid_ = std::move(cell_of_fluid);
   cell_of_wall_ = std::move(cell_of_wall);
   wall_wall_cutoff_ = wall_wall_cutoff_m;
+  box_ = box;
   stale_ = true;
 }
 
@@ -236,7 +262,7 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   fluid_fluid_.build = fluid_wall_.build = wall_wall_.build = ++builds_in_process;
   if (!cell_of_wall_.empty()) {
     const double ww = wall_wall_cutoff_ + skin_;
-    list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww), ww * ww, cell_of_wall_.data(), wall_wall_);
+    list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww, box_), ww * ww, cell_of_wall_.data(), box_, wall_wall_);
   }
   if (threads <= 1 || n < 2 * threads) {
     rows(0, n, fluid_fluid_, fluid_wall_);

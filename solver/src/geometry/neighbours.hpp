@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "core/periodic_box.hpp"
+
 namespace cellsim {
 
 // Compressed rows: the neighbours of i are index[offset[i] .. offset[i+1]), ascending.
@@ -35,11 +37,16 @@ class NeighbourLists {
               double wall_fluid_cutoff, int threads = 1, double moved_at_most_m = INFINITY);
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
+  // A periodic tissue's period changed: the next build uses it. Until then the caller counts the change
+  // in the moves it reports to update().
+  void set_period(const PeriodicBox& box) { box_ = box; }
 
   // A tissue (model.md §10): fluid pairs only within a cell, fluid-wall pairs only with the cell's own
-  // wall, and a third list of wall pairs of different cells within wall_wall_cutoff_m. Not called for
-  // one cell: then nothing is filtered and the wall-wall list stays empty.
-  void set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m);
+  // wall, and a third list of wall pairs of different cells within wall_wall_cutoff_m (of their nearest
+  // images, in a periodic tissue: model.md §10b). Not called for one cell: then nothing is filtered and the
+  // wall-wall list stays empty.
+  void set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m,
+                 const PeriodicBox& box = {});
 
   const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list (j > i), rows padded
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
@@ -57,6 +64,7 @@ class NeighbourLists {
   PairList fluid_fluid_, fluid_wall_, wall_wall_;
   std::vector<int> cell_of_fluid_, cell_of_wall_;  // empty: one cell
   double wall_wall_cutoff_ = 0;
+  PeriodicBox box_;  // of the wall-wall list
   std::vector<PairList> parts_;  // each thread's rows of both lists, while building with threads
   long builds_ = 0, displacement_checks_ = 0;
   double moved_bound_ = 0;  // no particle has moved farther since the build (valid unless stale_)

@@ -21,11 +21,13 @@ constexpr double kLamellaRangeOverGap = 1.5;
 // A face may not cut a cell closer to its centre than this fraction of its radius.
 constexpr double kSmallestFaceDistance = 0.3;
 
-// A face of a cell: the points x with x . normal = distance (from the cell's centre) bound it.
+// A face of a cell: the points x with x . normal = distance (from the cell's centre) bound it. Across
+// it lies cell `neighbour`, moved by `image` (a multiple of the period; zero in a cluster).
 struct Face {
   Eigen::Vector3d normal;
   double distance_m;
   int neighbour;
+  Eigen::Vector3d image;
 };
 
 std::vector<Eigen::Vector3d> lattice_centres(const Params& p, double distance_m) {
@@ -50,6 +52,31 @@ std::vector<Eigen::Vector3d> lattice_centres(const Params& p, double distance_m)
   return centres;
 }
 
+// tissue.lateral confined or unconfined: the period holds cells_x x cells_y cells of the lattice (model.md §10b).
+PeriodicBox lattice_period(const Params& p, double distance_m) {
+  if (p.lateral == kLateralFree) return {};
+  if (p.cells_x < 2 || p.cells_y < 2)
+    throw InputError("a periodic tissue.lateral needs tissue.cells_x and tissue.cells_y of at least 2 (got " +
+                     std::to_string(p.cells_x) + " x " + std::to_string(p.cells_y) +
+                     "): with one cell to a period a cell would face its own image");
+  if (p.packing == kClosePacking && p.cells_y % 2)
+    throw InputError("a periodic tissue.lateral with tissue.packing = close needs an even tissue.cells_y (got " +
+                     std::to_string(p.cells_y) + "): the hexagonal rows alternate, so the period is two rows");
+  const double row = p.packing == kClosePacking ? std::sqrt(3.0) / 2.0 : 1.0;
+  return {distance_m * static_cast<double>(p.cells_x), distance_m * row * static_cast<double>(p.cells_y)};
+}
+
+// The images of a cell that may face another: itself, and in a periodic tissue its eight lateral
+// neighbours' (the period is at least two cells, so no farther image comes within reach).
+std::vector<Eigen::Vector3d> lateral_images(const PeriodicBox& box) {
+  std::vector<Eigen::Vector3d> images{Eigen::Vector3d::Zero()};
+  if (!box.periodic()) return images;
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i)
+      if (i || j) images.emplace_back(i * box.length_x_m, j * box.length_y_m, 0.0);
+  return images;
+}
+
 // R (1 + spread z), z a seeded standard normal clipped to +-2 (Box-Muller on mt19937_64, which the
 // standard fixes bit for bit, unlike std::normal_distribution).
 std::vector<double> cell_radii(const Params& p, std::size_t count) {
@@ -68,23 +95,24 @@ std::vector<double> cell_radii(const Params& p, std::size_t count) {
 // The faces of cell a: the radical plane with each cell whose sphere comes within the wall gap of a's,
 // moved back by half the gap, so that facing walls are one gap apart.
 std::vector<Face> faces_of(int a, const std::vector<Eigen::Vector3d>& centres, const std::vector<double>& radii,
-                           double gap_m) {
+                           double gap_m, const PeriodicBox& box) {
   std::vector<Face> faces;
-  for (int b = 0; b < static_cast<int>(centres.size()); ++b) {
-    if (b == a) continue;
-    const Eigen::Vector3d ab = centres[b] - centres[a];
-    const double d = ab.norm(), ra = radii[a], rb = radii[b];
-    if (d >= ra + rb + gap_m) continue;  // nowhere nearer than the wall gap: no face between them
-    const double distance = (d * d + ra * ra - rb * rb) / (2.0 * d) - 0.5 * gap_m;
-    if (distance < kSmallestFaceDistance * ra) {
-      std::ostringstream msg;
-      msg << "tissue: cells " << a << " and " << b << " overlap too much (a face " << distance * 1e6
-          << " um from the centre of a cell of radius " << ra * 1e6
-          << " um); raise tissue.centre_distance_over_diameter, or lower tissue.diameter_spread or tissue.wall_gap_um";
-      throw InputError(msg.str());
+  for (int b = 0; b < static_cast<int>(centres.size()); ++b)
+    for (const Eigen::Vector3d& image : lateral_images(box)) {
+      if (b == a && image.isZero()) continue;
+      const Eigen::Vector3d ab = centres[b] + image - centres[a];
+      const double d = ab.norm(), ra = radii[a], rb = radii[b];
+      if (d >= ra + rb + gap_m) continue;  // nowhere nearer than the wall gap: no face between them
+      const double distance = (d * d + ra * ra - rb * rb) / (2.0 * d) - 0.5 * gap_m;
+      if (distance < kSmallestFaceDistance * ra) {
+        std::ostringstream msg;
+        msg << "tissue: cells " << a << " and " << b << " overlap too much (a face " << distance * 1e6
+            << " um from the centre of a cell of radius " << ra * 1e6
+            << " um); raise tissue.centre_distance_over_diameter, or lower tissue.diameter_spread or tissue.wall_gap_um";
+        throw InputError(msg.str());
+      }
+      faces.push_back({ab / d, distance, b, image});
     }
-    faces.push_back({ab / d, distance, b});
-  }
   return faces;
 }
 
@@ -143,21 +171,23 @@ void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, d
       if ((t.wall_x.col(k) - t.centre_m[cell]).dot(normal) > distance - range_m) near.push_back(static_cast<int>(k));
     return near;
   };
-  const double between = (t.centre_m[b] - t.centre_m[a]).norm();
+  const double between = (t.centre_m[b] + face.image - t.centre_m[a]).norm();
   const std::vector<int> side_a = near_face(a, face.normal, face.distance_m);
   const std::vector<int> side_b = near_face(b, -face.normal, between - face.distance_m - gap_m);  // b's own face
   std::vector<LamellaBond> found;
-  const auto nearest = [&](int from, const std::vector<int>& others) {
+  // i of a and j of b, b's particle seen in the image that faces a
+  const auto distance2 = [&](int i, int j) { return (t.wall_x.col(j) + face.image - t.wall_x.col(i)).squaredNorm(); };
+  const auto nearest = [&](int from, const std::vector<int>& others, bool from_a) {
     int best = -1;
     double best2 = range_m * range_m;
     for (int o : others) {
-      const double r2 = (t.wall_x.col(from) - t.wall_x.col(o)).squaredNorm();
+      const double r2 = from_a ? distance2(from, o) : distance2(o, from);
       if (r2 < best2) best2 = r2, best = o;
     }
     if (best >= 0) found.push_back({std::min(from, best), std::max(from, best), std::sqrt(best2)});
   };
-  for (int i : side_a) nearest(i, side_b);
-  for (int j : side_b) nearest(j, side_a);
+  for (int i : side_a) nearest(i, side_b, true);
+  for (int j : side_b) nearest(j, side_a, false);
   const auto pair_of = [](const LamellaBond& bond) { return std::make_pair(bond.a, bond.b); };
   std::sort(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) < pair_of(y); });
   found.erase(std::unique(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) == pair_of(y); }),
@@ -178,13 +208,15 @@ std::vector<int> cell_of(const std::vector<Eigen::Index>& first) {
 }  // namespace
 
 std::vector<int> CellRanges::cell_of_fluid() const { return cell_of(fluid); }
+int CellRanges::layers() const { return layer.empty() ? 1 : *std::max_element(layer.begin(), layer.end()) + 1; }
 std::vector<int> CellRanges::cell_of_wall() const { return cell_of(wall); }
 
 Tissue build_tissue(Params& p) {
   const Cell model = build_cell(p);  // the paper's cell: derived parameters, dx, masses
   if (!p.wall_gap_m) p.wall_gap_m = p.thickness_m;
   const double radius = 0.5 * p.diameter_m, gap = *p.wall_gap_m;
-  const std::vector<Eigen::Vector3d> centres = lattice_centres(p, p.centre_distance_over_diameter * p.diameter_m);
+  const double centre_distance = p.centre_distance_over_diameter * p.diameter_m;
+  const std::vector<Eigen::Vector3d> centres = lattice_centres(p, centre_distance);
   const std::vector<double> radii = cell_radii(p, centres.size());
 
   Tissue t;
@@ -192,12 +224,13 @@ Tissue build_tissue(Params& p) {
   t.wall_mass_kg = model.wall_mass_kg;
   t.fluid_spacing_m = model.fluid_spacing_m;
   t.centre_m = centres;
+  t.box = lattice_period(p, centre_distance);
   t.wall_particle_area_m2 = M_PI * p.diameter_m * p.diameter_m / static_cast<double>(p.n_wall);
   std::vector<Eigen::Matrix3Xd> walls, fluids;
   std::vector<double> fluid_masses;
   for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
     const double rc = radii[c], scale = rc / radius;
-    const std::vector<Face> faces = faces_of(c, centres, radii, gap);
+    const std::vector<Face> faces = faces_of(c, centres, radii, gap, t.box);
     // The wall: a sphere with the wall's particle spacing, each point moved onto the faces; its
     // triangles are the sphere's (every point stays on a ray from the centre: still outward).
     const int n_wall = static_cast<int>(std::lround(static_cast<double>(p.n_wall) * scale * scale));
@@ -238,6 +271,7 @@ Tissue build_tissue(Params& p) {
     t.mesh.rest_length_m.insert(t.mesh.rest_length_m.end(), mesh.rest_length_m.begin(), mesh.rest_length_m.end());
     t.mesh.hinges.insert(t.mesh.hinges.end(), mesh.hinges.begin(), mesh.hinges.end());
     t.cells.wall.push_back(t.cells.wall.back() + wall.cols());
+    t.cells.layer.push_back(static_cast<int>(c / (p.cells_x * p.cells_y)));  // lattice_centres: layer by layer
     t.cells.fluid.push_back(t.cells.fluid.back() + fluid.cols());
     t.mesh.cell_triangles.push_back(static_cast<int>(t.mesh.triangles.size()));
     walls.push_back(wall.colwise() + centres[c]);
@@ -251,8 +285,8 @@ Tissue build_tissue(Params& p) {
     t.fluid_x.middleCols(t.cells.fluid[c], t.cells.fluid_count(c)) = fluids[c];
     t.fluid_mass_kg.segment(t.cells.fluid[c], t.cells.fluid_count(c)).setConstant(fluid_masses[c]);
   }
-  for (int a = 0; a < t.cells.count(); ++a)
-    for (const Face& face : faces_of(a, centres, radii, gap))
+  for (int a = 0; a < t.cells.count(); ++a)  // each face once: from the lower-numbered of its two cells
+    for (const Face& face : faces_of(a, centres, radii, gap, t.box))
       if (face.neighbour > a) bond_faces(t, a, face.neighbour, face, gap, kLamellaRangeOverGap * gap, t.lamella);
   return t;
 }

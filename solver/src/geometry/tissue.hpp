@@ -7,14 +7,19 @@
 #include <Eigen/Core>
 
 #include "core/params.hpp"
+#include "core/periodic_box.hpp"
 #include "geometry/wall_mesh.hpp"
 
 namespace cellsim {
 
 // Cell c owns fluid particles [fluid[c], fluid[c + 1]) and wall particles [wall[c], wall[c + 1])
-// (and the triangles WallMesh::cell_triangles gives it).
+// (and the triangles WallMesh::cell_triangles gives it), and sits in layer layer[c] along z (0 at the
+// bottom; the one cell: layer 0).
 struct CellRanges {
   std::vector<Eigen::Index> fluid{0}, wall{0};
+  std::vector<int> layer;
+  int layer_of(int c) const { return layer.empty() ? 0 : layer[static_cast<std::size_t>(c)]; }
+  int layers() const;
   int count() const { return static_cast<int>(fluid.size()) - 1; }
   Eigen::Index fluid_count(int c) const { return fluid[c + 1] - fluid[c]; }
   Eigen::Index wall_count(int c) const { return wall[c + 1] - wall[c]; }
@@ -40,10 +45,12 @@ struct Tissue {
   std::vector<Eigen::Vector3d> centre_m;  // each cell's centre as built
   std::vector<LamellaBond> lamella;       // facing wall particles, bonded
   double wall_particle_area_m2 = 0;       // the area a wall particle owns: pi D0^2 / N_w
+  PeriodicBox box;                        // tissue.lateral = confined: the lateral period (else none)
 };
 
 // Builds the tissue and fills in the derived parameters of p that are still unset (those of
-// build_cell, and tissue.wall_gap_um). Throws InputError if the geometry is impossible.
+// build_cell, and tissue.wall_gap_um). Throws InputError if the geometry is impossible. A periodic
+// tissue's cells face their neighbours' images across the period as they face their neighbours.
 Tissue build_tissue(Params& p);
 
 }  // namespace cellsim

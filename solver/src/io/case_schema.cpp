@@ -72,6 +72,14 @@ std::vector<ParamSpec> build_specs() {
       choice("tissue.packing", &P::packing, {"cubic", "close"},
              "where the cells' centres sit: cubic (a simple cubic lattice) or close (hexagonal layers stacked "
              "ABC, face-centred cubic)", "model.md §10"),
+      choice("tissue.lateral", &P::lateral, {"free", "confined", "unconfined"},
+             "the sides of the tissue: free (a cluster of cells_x x cells_y x cells_z), or a slab periodic in x and y "
+             "(cells_x x cells_y cells to a period) whose period follows zero lateral stress in drying, and in "
+             "compression is held (confined) or keeps following it (unconfined)", "model.md §10b"),
+      real("tissue.period_viscosity_Pa_s", "Pa s", 1.0, &P::period_viscosity_Pa_s, 1, 0, false, 1e6, true,
+           "a periodic slab's period strains at -(its lateral stress) / this while it follows zero lateral stress "
+           "(1 Pa s: 100 kPa strains it 0.1 per us; relaxation time ~1 us for a slab of modulus ~1 MPa)",
+           "model.md §10b"),
       real("tissue.centre_distance_over_diameter", "1", 1.0, &P::centre_distance_over_diameter, 0.85, 0.6, true, 2,
            true, "distance between neighbouring cells' centres / D0; below 1 the cells press flat faces on each "
            "other (0.85: porosity ~0.23 in cubic packing)", "model.md §10"),
@@ -214,9 +222,10 @@ std::vector<ParamSpec> build_specs() {
       real("compression.plate_stiffness_N_m", "N/m", 1.0, &P::plate_stiffness_N_m, 1e3, 0, false, 1e9, true,
            "plate-wall force coefficient k_pw", "Eq 22"),
       real("compression.plate_length_um", "um", kMicro, &P::plate_length_m, 150, 0, false, 1e5, true,
-           "plate footprint along x (the plate stress divides by length x width)", "Eq 22, model.md §8"),
+           "plate footprint along x (the plate stress divides by length x width); a periodic slab's plates "
+           "cover every period, and its stress divides by the period's area", "Eq 22, model.md §8, §10b"),
       real("compression.plate_width_um", "um", kMicro, &P::plate_width_m, 150, 0, false, 1e5, true,
-           "plate footprint along y", "Eq 22, model.md §8"),
+           "plate footprint along y (not used by a periodic slab)", "Eq 22, model.md §8, §10b"),
       derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
               "stop compression when the nominal strain reaches this value", "model.md §6",
               "none: run all compression.steps"),

@@ -142,16 +142,18 @@ void ResultFile::write_timeseries(const std::vector<Record>& records) {
     h5::set_dataset_attr(g.id(), q.name, "unit", q.unit);
     h5::set_dataset_attr(g.id(), q.name, "definition", q.definition);
   }
-  // Each cell's series: records x cells.
-  h5::Handle cells = h5::create_group(file_.id(), "cells");
-  const std::size_t n_cells = records.empty() ? 0 : records.front().cell_volume_m3.size();
-  for (const auto& q : cell_quantities()) {
-    std::vector<double> table;
-    table.reserve(records.size() * n_cells);
-    for (const auto& r : records) table.insert(table.end(), (r.*q.member).begin(), (r.*q.member).end());
-    h5::write(cells.id(), q.name, table, {records.size(), n_cells});
-    h5::set_dataset_attr(cells.id(), q.name, "unit", q.unit);
-    h5::set_dataset_attr(cells.id(), q.name, "definition", q.definition);
+  // Each cell's series (records x cells), and each layer's (records x layers).
+  for (const auto& [group_name, list] : {std::pair{"cells", &cell_quantities()}, std::pair{"layers", &layer_quantities()}}) {
+    h5::Handle group = h5::create_group(file_.id(), group_name);
+    for (const auto& q : *list) {
+      const std::size_t columns = records.empty() ? 0 : (records.front().*q.member).size();
+      std::vector<double> table;
+      table.reserve(records.size() * columns);
+      for (const auto& r : records) table.insert(table.end(), (r.*q.member).begin(), (r.*q.member).end());
+      h5::write(group.id(), q.name, table, {records.size(), columns});
+      h5::set_dataset_attr(group.id(), q.name, "unit", q.unit);
+      h5::set_dataset_attr(group.id(), q.name, "definition", q.definition);
+    }
   }
 }
 

@@ -20,6 +20,7 @@ constexpr PlateField kPlateFields[] = {
     {"plate_force_top_N", &Plates::force_top_N},     {"plate_force_bottom_N", &Plates::force_bottom_N},
     {"plate_contact_height_m", &Plates::contact_height_m}, {"plate_footprint_m2", &Plates::footprint_m2},
     {"plate_first_contact_top_z_m", &Plates::first_contact_top_z_m},
+    {"plate_gauge_length_m", &Plates::gauge_length_m},
 };
 
 // The energy account's running integrals (state.hpp), stored as attributes under these names.
@@ -62,6 +63,8 @@ void write_state(hid_t parent, const State& s) {
   h5::set_attr(g.id(), "wall_mass_kg", s.wall.mass_kg);
   h5::set_attr(g.id(), "plates_active", static_cast<std::int64_t>(s.plates.active));
   h5::set_attr(g.id(), "plate_contacts", static_cast<std::int64_t>(s.plates.contacts));
+  h5::set_attr(g.id(), "box_length_x_m", s.box.length_x_m);
+  h5::set_attr(g.id(), "box_length_y_m", s.box.length_y_m);
   for (const auto& field : kPlateFields) h5::set_attr(g.id(), field.name, s.plates.*field.member);
   for (const auto& field : kEnergyFields) h5::set_attr(g.id(), field.name, s.energy.*field.member);
   h5::write_points(g.id(), "wall_positions", s.wall.x);
@@ -75,6 +78,8 @@ void write_state(hid_t parent, const State& s) {
               {s.lamella_intact.size()});
   if (!s.lamella_peak_opening_m.empty())
     h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
+  if (!s.plates.start_layer_height_m.empty())
+    h5::write(g.id(), "start_layer_height", s.plates.start_layer_height_m, {s.plates.start_layer_height_m.size()});
   // the sliders: the plastic set a continued run carries
   h5::write(g.id(), "bond_plastic_elongation", s.bond_plastic_elongation_m, {s.bond_plastic_elongation_m.size()});
 }
@@ -108,9 +113,16 @@ SavedRun read_saved_run(const std::string& path) {
     s.wall.mass_kg = h5::get_attr_double(g.id(), "wall_mass_kg");
     s.plates.active = h5::get_attr_int(g.id(), "plates_active") != 0;
     s.plates.contacts = static_cast<int>(h5::get_attr_int(g.id(), "plate_contacts"));
-    for (const auto& field : kPlateFields) s.plates.*field.member = h5::get_attr_double(g.id(), field.name);
+    if (h5::has_attr(g.id(), "box_length_x_m")) {  // written before periodic tissues: no period
+      s.box.length_x_m = h5::get_attr_double(g.id(), "box_length_x_m");
+      s.box.length_y_m = h5::get_attr_double(g.id(), "box_length_y_m");
+    }
+    for (const auto& field : kPlateFields)  // a field added since the file was written: none
+      s.plates.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : std::nan("");
     for (const auto& field : kEnergyFields)  // a flow added since the file was written started at 0
       s.energy.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : 0.0;
+    if (h5::exists(g.id(), "start_layer_height"))
+      s.plates.start_layer_height_m = h5::read_doubles(g.id(), "start_layer_height");
     if (h5::exists(g.id(), "bond_plastic_elongation"))
       s.bond_plastic_elongation_m = h5::read_doubles(g.id(), "bond_plastic_elongation");
     s.wall.x = h5::read_points(g.id(), "wall_positions");
@@ -134,14 +146,19 @@ SavedRun read_saved_run(const std::string& path) {
       if (column.size() != run.records.size()) throw std::runtime_error("time series of unequal length");
       for (std::size_t r = 0; r < column.size(); ++r) run.records[r].*q.member = column[r];
     }
-    h5::Handle cells = h5::open_group(file.id(), "cells");
-    for (const auto& q : cell_quantities()) {
-      std::vector<hsize_t> dims;
-      const auto table = h5::read_doubles(cells.id(), q.name, &dims);
-      if (dims.size() != 2 || dims[0] != run.records.size()) throw std::runtime_error("per-cell series of unequal length");
-      for (std::size_t r = 0; r < run.records.size(); ++r)
-        (run.records[r].*q.member).assign(table.begin() + static_cast<std::ptrdiff_t>(r * dims[1]),
-                                          table.begin() + static_cast<std::ptrdiff_t>((r + 1) * dims[1]));
+    for (const auto& [group_name, list] : {std::pair{"cells", &cell_quantities()}, std::pair{"layers", &layer_quantities()}}) {
+      if (!h5::exists(file.id(), group_name)) continue;  // written before the layers were
+      h5::Handle group = h5::open_group(file.id(), group_name);
+      for (const auto& q : *list) {
+        if (!h5::exists(group.id(), q.name)) continue;  // a series added since the file was written
+        std::vector<hsize_t> dims;
+        const auto table = h5::read_doubles(group.id(), q.name, &dims);
+        if (dims.size() != 2 || dims[0] != run.records.size())
+          throw std::runtime_error(std::string("per-") + group_name + " series of unequal length");
+        for (std::size_t r = 0; r < run.records.size(); ++r)
+          (run.records[r].*q.member).assign(table.begin() + static_cast<std::ptrdiff_t>(r * dims[1]),
+                                            table.begin() + static_cast<std::ptrdiff_t>((r + 1) * dims[1]));
+      }
     }
   } catch (const InputError&) {
     throw;

@@ -4,29 +4,40 @@
 #include <cmath>
 
 namespace cellsim {
+namespace {
 
-int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
-                            const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
-                            std::vector<char>& intact, std::vector<double>& peak_opening_m,
-                            Eigen::Matrix3Xd& wall_force) {
+// The loops, with the virial only where it is asked for: a product kept for the virial changes how the
+// compiler may fuse the force sums, and a cluster's forces keep their bits without it.
+template <bool kVirial>
+int contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall, const std::vector<LamellaBond>& bonds,
+                   const CellContactLaw& law, const PeriodicBox& box, std::vector<char>& intact,
+                   std::vector<double>& peak_opening_m, Eigen::Matrix3Xd& wall_force, Eigen::Vector2d& virial) {
   const double gap2 = law.gap_m * law.gap_m;
+  // The period shift of the pair (k, l) (nearest image of k - l, less k - l) times the force on k.
+  const auto add_virial = [&](Eigen::Index k, Eigen::Index l, const Eigen::Vector3d& k_minus_l,
+                              const Eigen::Vector3d& force_on_k) {
+    if constexpr (!kVirial) return;
+    const Eigen::Vector3d shift = k_minus_l - (wall_x.col(k) - wall_x.col(l));
+    virial += shift.head<2>().cwiseProduct(force_on_k.head<2>());
+  };
   for (int k = 0; k < wall_wall.rows(); ++k)
     for (std::size_t q = static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k)]);
          q < static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k) + 1]); ++q) {
       const int l = wall_wall.index[q];
-      const Eigen::Vector3d kl = wall_x.col(k) - wall_x.col(l);
+      const Eigen::Vector3d kl = box.nearest_image(wall_x.col(k) - wall_x.col(l));
       const double r2 = kl.squaredNorm();
       if (r2 >= gap2 || r2 == 0) continue;
       const double r = std::sqrt(r2);
       const Eigen::Vector3d push = law.contact_stiffness_N_m * (law.gap_m - r) / r * kl;  // on k, away from l
       wall_force.col(k) += push;
       wall_force.col(l) -= push;
+      add_virial(k, l, kl, push);
     }
   int broken = 0;
   for (std::size_t b = 0; b < bonds.size(); ++b) {
     if (!intact[b]) continue;
     const LamellaBond& bond = bonds[b];
-    const Eigen::Vector3d ab = wall_x.col(bond.b) - wall_x.col(bond.a);
+    const Eigen::Vector3d ab = box.nearest_image(wall_x.col(bond.b) - wall_x.col(bond.a));
     const double r = ab.norm();
     const double opening = r - bond.length_m;
     peak_opening_m[b] = std::max(peak_opening_m[b], opening);
@@ -39,7 +50,24 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
     const Eigen::Vector3d pull = tension / r * ab;  // on a, toward b
     wall_force.col(bond.a) += pull;
     wall_force.col(bond.b) -= pull;
+    add_virial(bond.a, bond.b, -ab, pull);
   }
+  return broken;
+}
+
+}  // namespace
+
+int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                            const std::vector<LamellaBond>& bonds, const CellContactLaw& law, const PeriodicBox& box,
+                            std::vector<char>& intact, std::vector<double>& peak_opening_m,
+                            Eigen::Matrix3Xd& wall_force, Eigen::Vector2d* period_virial_J) {
+  Eigen::Vector2d virial = Eigen::Vector2d::Zero();
+  const bool with_virial = period_virial_J && box.periodic();
+  const int broken = with_virial ? contact_forces<true>(wall_x, wall_wall, bonds, law, box, intact, peak_opening_m,
+                                                        wall_force, virial)
+                                 : contact_forces<false>(wall_x, wall_wall, bonds, law, box, intact, peak_opening_m,
+                                                         wall_force, virial);
+  if (period_virial_J) *period_virial_J = virial;
   return broken;
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "geometry/neighbours.hpp"
+#include "core/periodic_box.hpp"
 #include "geometry/tissue.hpp"
 #include "physics/lamella_law.hpp"
 
@@ -19,12 +20,16 @@ struct CellContactLaw {
   LamellaLaw lamella;
 };
 
-// Adds the contact and lamella forces to wall_force (each pair's two forces are equal and opposite).
-// Each bond's largest opening so far is kept in peak_opening_m; a bond whose peak reaches delta_f is
-// marked separated in `intact` before it acts. Returns how many separated now.
+// Adds the contact and lamella forces to wall_force (each pair's two forces are equal and opposite,
+// along the line to the partner's nearest image in a periodic tissue: model.md §10b). Each bond's
+// largest opening so far is kept in peak_opening_m; a bond whose peak reaches delta_f is marked
+// separated in `intact` before it acts. Returns how many separated now. period_virial_J, if given,
+// receives the x and y parts of sum s (x) f over the pairs that act across the period (s: the period
+// shift that takes the partner to its nearest image, f: the force on the particle it is seen from),
+// the whole lateral virial of a periodic tissue at rest (model.md §10b).
 int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
-                            const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                            const std::vector<LamellaBond>& bonds, const CellContactLaw& law, const PeriodicBox& box,
                             std::vector<char>& intact, std::vector<double>& peak_opening_m,
-                            Eigen::Matrix3Xd& wall_force);
+                            Eigen::Matrix3Xd& wall_force, Eigen::Vector2d* period_virial_J = nullptr);
 
 }  // namespace cellsim

@@ -7,6 +7,8 @@
 namespace cellsim {
 
 PlateLaw plate_law(const Params& p) {
+  if (p.lateral != kLateralFree)  // a periodic slab: the plates cover every period (model.md §10b)
+    return {p.plate_range_m, p.plate_stiffness_N_m, INFINITY, INFINITY};
   return {p.plate_range_m, p.plate_stiffness_N_m, p.plate_length_m, p.plate_width_m};
 }
 
