@@ -41,6 +41,10 @@ QUANTITIES = {
     "lamella_intact": ("middle-lamella bonds intact", 1.0),
     "tissue_volume_m3": ("tissue volume (hull) [10^6 um^3]", 1e12),
     "porosity": ("porosity", 1.0),
+    "gauge_strain": ("interior gauge strain", 1.0),
+    "period_x_m": ("period along x [um]", 1e6),
+    "period_y_m": ("period along y [um]", 1e6),
+    "lateral_stress_Pa": ("lateral stress [kPa]", 1e-3),
     # the energy account (docs/model.md §8)
     "internal_energy_J": ("fluid internal energy [nJ]", 1e9),
     "wall_stiff_energy_J": ("wall stiff-spring energy [nJ]", 1e9),
