@@ -2,6 +2,8 @@
 // period, and forces, volumes and areas that do not depend on which image of a cell is stored.
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -278,4 +280,27 @@ TEST(PeriodicTissue, ThePeriodShrinksWithTheDryingCellsAndEndsFreeOfLateralStres
   EXPECT_EQ(std::count(sim.state().lamella_intact.begin(), sim.state().lamella_intact.end(), 1),
             static_cast<long>(t.lamella.size()));
   EXPECT_NO_THROW(sim.check_containment());
+}
+
+// Close packing in a period (hexagonal layers stacked A, B, C, with a seeded spread of diameters): a
+// cell of the middle layer meets twelve neighbours, six in its layer and three above and below, most of
+// them images across the period, each a distinct (cell, image) pair.
+TEST(PeriodicTissue, AClosePackedSlabGivesAMiddleCellTwelveNeighboursAcrossThePeriod) {
+  Params p = slab_case(2, 2, 3, {{"tissue", {{"packing", "close"}, {"diameter_spread", 0.05}, {"seed", 7},
+                                            {"centre_distance_over_diameter", 0.9}}}});
+  const Tissue t = build_tissue(p);
+  ASSERT_EQ(t.cells.count(), 12);
+  const std::vector<int> cell = t.cells.cell_of_wall();
+  // (partner cell, its image as whole periods) of every bond, from each side
+  std::vector<std::set<std::tuple<int, long, long>>> partners(12);
+  for (const LamellaBond& bond : t.lamella) {
+    const Eigen::Vector3d direct = t.wall_x.col(bond.b) - t.wall_x.col(bond.a);
+    const Eigen::Vector3d shift = t.box.nearest_image(direct) - direct;
+    const long ix = std::lround(shift.x() / t.box.length_x_m), iy = std::lround(shift.y() / t.box.length_y_m);
+    partners[cell[bond.a]].insert({cell[bond.b], ix, iy});
+    partners[cell[bond.b]].insert({cell[bond.a], -ix, -iy});
+  }
+  for (int c = 4; c < 8; ++c) EXPECT_EQ(partners[c].size(), 12u) << "cell " << c;  // the middle layer
+  for (int c : {0, 11}) EXPECT_EQ(partners[c].size(), 9u) << "cell " << c;        // six in the layer, three beside
+  EXPECT_NEAR(t.box.length_y_m, std::sqrt(3.0) * 0.9 * p.diameter_m, 1e-12);     // two rows of sqrt 3 / 2 d
 }
