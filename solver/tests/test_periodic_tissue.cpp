@@ -304,3 +304,15 @@ TEST(PeriodicTissue, AClosePackedSlabGivesAMiddleCellTwelveNeighboursAcrossThePe
   for (int c : {0, 11}) EXPECT_EQ(partners[c].size(), 9u) << "cell " << c;        // six in the layer, three beside
   EXPECT_NEAR(t.box.length_y_m, std::sqrt(3.0) * 0.9 * p.diameter_m, 1e-12);     // two rows of sqrt 3 / 2 d
 }
+
+// A period viscosity so low that the period would jump stops the run, naming the key.
+TEST(PeriodicTissue, APeriodThatWouldJumpStopsTheRunNamingTheKey) {
+  Params p = slab_case(2, 2, 1, {{"tissue", {{"lateral", "unconfined"}, {"period_viscosity_Pa_s", 1e-9}}}});
+  Simulation sim(p, stretched(build_tissue(p), 1.01));
+  try {
+    sim.step();
+    FAIL() << "no failure";
+  } catch (const NumericalFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("tissue.period_viscosity_Pa_s"), std::string::npos) << e.what();
+  }
+}

@@ -424,10 +424,19 @@ void Simulation::cell_contact_terms() {
 // A periodic slab's period follows zero lateral stress (in drying, and in compression if unconfined):
 // it strains at -sigma / eta_p along x and y, and each cell moves with it, whole, as its centroid maps
 // (model.md §10b). The cells keep their shape and velocities; only the distances between them change.
+// The most a period may strain in one step: far below a cell's own strain per step, so the cells keep up.
+constexpr double kLargestPeriodStrainPerStep = 1e-3;
 void Simulation::follow_lateral_stress(double dt) {
   if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.lateral != kLateralUnconfined)) return;
   const Eigen::Vector2d strain(-s_.lateral_stress_x_Pa / p_.period_viscosity_Pa_s * dt,
                                -s_.lateral_stress_y_Pa / p_.period_viscosity_Pa_s * dt);
+  if (strain.cwiseAbs().maxCoeff() > kLargestPeriodStrainPerStep) {  // a period that jumps would tear the slab
+    std::ostringstream msg;
+    msg << where() << ": the period would strain by " << strain.cwiseAbs().maxCoeff() << " in one step (lateral stress "
+        << s_.lateral_stress_x_Pa / 1e3 << " / " << s_.lateral_stress_y_Pa / 1e3
+        << " kPa); raise tissue.period_viscosity_Pa_s (now " << p_.period_viscosity_Pa_s << ")";
+    throw NumericalFailure(msg.str());
+  }
   double moved_m = 0;
   for (int c = 0; c < cells_.count(); ++c) {
     const Eigen::Vector2d centroid = s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).topRows<2>().rowwise().mean();
