@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/containment.hpp"
+#include "engine/periodic_slab.hpp"
 #include "engine/strain_gauge.hpp"
 #include "geometry/hull.hpp"
 #include "parallel/cell_blocks.hpp"
@@ -413,43 +414,24 @@ void Simulation::cell_contact_terms() {
   Eigen::Vector2d period_virial_J;
   add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.box, s_.lamella_intact,
                           s_.lamella_peak_opening_m, wall_force_, &period_virial_J);
-  if (s_.box.periodic()) {  // -virial / volume of one period of the slab: tension positive
-    const double volume_m3 = s_.box.area_m2() * cell_height_m(s_.wall.x);
-    s_.lateral_stress_x_Pa = -period_virial_J.x() / volume_m3;
-    s_.lateral_stress_y_Pa = -period_virial_J.y() / volume_m3;
+  if (s_.box.periodic()) {
+    const Eigen::Vector2d stress = lateral_stress_Pa(period_virial_J, s_.box, cell_height_m(s_.wall.x));
+    s_.lateral_stress_x_Pa = stress.x();
+    s_.lateral_stress_y_Pa = stress.y();
   }
   timer_.lap(Phase::CellContact);
 }
 
-// A periodic slab's period follows zero lateral stress (in drying, and in compression if unconfined):
-// it strains at -sigma / eta_p along x and y, and each cell moves with it, whole, as its centroid maps
-// (model.md §10b). The cells keep their shape and velocities; only the distances between them change.
-// The most a period may strain in one step: far below a cell's own strain per step, so the cells keep up.
-constexpr double kLargestPeriodStrainPerStep = 1e-3;
+// A periodic slab's period follows zero lateral stress in drying, and in compression if unconfined
+// (periodic_slab.hpp); the lists learn the new period and how far the move can have taken a pair.
 void Simulation::follow_lateral_stress(double dt) {
   if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.lateral != kLateralUnconfined)) return;
-  const Eigen::Vector2d strain(-s_.lateral_stress_x_Pa / p_.period_viscosity_Pa_s * dt,
-                               -s_.lateral_stress_y_Pa / p_.period_viscosity_Pa_s * dt);
-  if (strain.cwiseAbs().maxCoeff() > kLargestPeriodStrainPerStep) {  // a period that jumps would tear the slab
-    std::ostringstream msg;
-    msg << where() << ": the period would strain by " << strain.cwiseAbs().maxCoeff() << " in one step (lateral stress "
-        << s_.lateral_stress_x_Pa / 1e3 << " / " << s_.lateral_stress_y_Pa / 1e3
-        << " kPa); raise tissue.period_viscosity_Pa_s (now " << p_.period_viscosity_Pa_s << ")";
-    throw NumericalFailure(msg.str());
+  try {
+    moved_since_lists_m_ += cellsim::follow_lateral_stress(s_, cells_, p_.period_viscosity_Pa_s, dt);
+  } catch (const NumericalFailure& e) {
+    throw NumericalFailure(where() + ": " + e.what());
   }
-  double moved_m = 0;
-  for (int c = 0; c < cells_.count(); ++c) {
-    const Eigen::Vector2d centroid = s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).topRows<2>().rowwise().mean();
-    const Eigen::Vector2d by = strain.cwiseProduct(centroid);
-    s_.wall.x.middleCols(cells_.wall[c], cells_.wall_count(c)).topRows<2>().colwise() += by;
-    s_.fluid.x.middleCols(cells_.fluid[c], cells_.fluid_count(c)).topRows<2>().colwise() += by;
-    moved_m = std::max(moved_m, by.norm());
-  }
-  s_.box.length_x_m *= 1.0 + strain.x();
-  s_.box.length_y_m *= 1.0 + strain.y();
   neighbours_.set_period(s_.box);
-  // a pair across the period also sees the period's change
-  moved_since_lists_m_ += moved_m + strain.cwiseAbs().maxCoeff() * std::max(s_.box.length_x_m, s_.box.length_y_m);
 }
 
 // The pressure coupling's backstop range follows h (Eq 6) as the fluid spacing does; its pressure is K.

@@ -1,0 +1,37 @@
+#include "engine/periodic_slab.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "core/errors.hpp"
+
+namespace cellsim {
+
+Eigen::Vector2d lateral_stress_Pa(const Eigen::Vector2d& period_virial_J, const PeriodicBox& box, double height_m) {
+  return -period_virial_J / (box.area_m2() * height_m);
+}
+
+double follow_lateral_stress(State& s, const CellRanges& cells, double period_viscosity_Pa_s, double dt) {
+  const Eigen::Vector2d strain(-s.lateral_stress_x_Pa / period_viscosity_Pa_s * dt,
+                               -s.lateral_stress_y_Pa / period_viscosity_Pa_s * dt);
+  if (strain.cwiseAbs().maxCoeff() > kLargestPeriodStrainPerStep) {  // a period that jumps would tear the slab
+    std::ostringstream msg;
+    msg << "the period would strain by " << strain.cwiseAbs().maxCoeff() << " in one step (lateral stress "
+        << s.lateral_stress_x_Pa / 1e3 << " / " << s.lateral_stress_y_Pa / 1e3
+        << " kPa); raise tissue.period_viscosity_Pa_s (now " << period_viscosity_Pa_s << ")";
+    throw NumericalFailure(msg.str());
+  }
+  double moved_m = 0;
+  for (int c = 0; c < cells.count(); ++c) {
+    const Eigen::Vector2d centroid = s.wall.x.middleCols(cells.wall[c], cells.wall_count(c)).topRows<2>().rowwise().mean();
+    const Eigen::Vector2d by = strain.cwiseProduct(centroid);
+    s.wall.x.middleCols(cells.wall[c], cells.wall_count(c)).topRows<2>().colwise() += by;
+    s.fluid.x.middleCols(cells.fluid[c], cells.fluid_count(c)).topRows<2>().colwise() += by;
+    moved_m = std::max(moved_m, by.norm());
+  }
+  s.box.length_x_m *= 1.0 + strain.x();
+  s.box.length_y_m *= 1.0 + strain.y();
+  return moved_m + strain.cwiseAbs().maxCoeff() * std::max(s.box.length_x_m, s.box.length_y_m);
+}
+
+}  // namespace cellsim
