@@ -22,7 +22,7 @@ namespace {
 // A periodic slab of the small cell (40 um), nx x ny cells to a period, nz layers.
 Params slab_case(int nx, int ny, int nz, const nlohmann::json& extra = nlohmann::json::object()) {
   nlohmann::json doc = {
-      {"tissue", {{"cells_x", nx}, {"cells_y", ny}, {"cells_z", nz}, {"wall_gap_um", 1.6}, {"lateral", "confined"}}}};
+      {"tissue", {{"cells_x", nx}, {"cells_y", ny}, {"cells_z", nz}, {"wall_gap_um", 1.6}, {"lateral", "periodic"}}}};
   doc.merge_patch(extra);
   return small_cell_case(doc);
 }
@@ -173,6 +173,18 @@ TEST(PeriodicTissue, APeriodOfOneCellOrAnOddNumberOfHexagonalRowsIsRefusedNaming
   }
 }
 
+// An unconfined compression asks a period to follow: a cluster (free sides) has none.
+TEST(PeriodicTissue, AnUnconfinedClusterIsRefusedNamingBothKeys) {
+  Params p = slab_case(2, 2, 1, {{"tissue", {{"lateral", "free"}}}, {"compression", {{"lateral", "unconfined"}}}});
+  try {
+    build_tissue(p);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("compression.lateral = unconfined"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("tissue.lateral = periodic"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PeriodicTissue, PlatesCoverThePeriodAndTheStressIsOverItsArea) {
   Params p = slab_case(2, 2, 1);
   Simulation sim(p, build_tissue(p));
@@ -239,7 +251,7 @@ TEST(PeriodicTissue, AStretchedPeriodIsInTensionAndASqueezedOneInCompression) {
 // Unconfined, a stretched period follows its tension back: the period shrinks and the tension falls;
 // confined in compression, the period does not move.
 TEST(PeriodicTissue, AnUnconfinedPeriodFollowsZeroLateralStressAndAConfinedOneHoldsInCompression) {
-  Params p = slab_case(2, 2, 1, {{"tissue", {{"lateral", "unconfined"}, {"period_viscosity_Pa_s", 0.1}}}});
+  Params p = slab_case(2, 2, 1, {{"tissue", {{"period_viscosity_Pa_s", 0.1}}}, {"compression", {{"lateral", "unconfined"}}}});
   const Tissue t = stretched(build_tissue(p), 1.01);
   Simulation sim(p, t);
   const double tension = sim.state().lateral_stress_x_Pa;
@@ -307,7 +319,7 @@ TEST(PeriodicTissue, AClosePackedSlabGivesAMiddleCellTwelveNeighboursAcrossThePe
 
 // A period viscosity so low that the period would jump stops the run, naming the key.
 TEST(PeriodicTissue, APeriodThatWouldJumpStopsTheRunNamingTheKey) {
-  Params p = slab_case(2, 2, 1, {{"tissue", {{"lateral", "unconfined"}, {"period_viscosity_Pa_s", 1e-9}}}});
+  Params p = slab_case(2, 2, 1, {{"tissue", {{"period_viscosity_Pa_s", 1e-9}}}, {"compression", {{"lateral", "unconfined"}}}});
   Simulation sim(p, stretched(build_tissue(p), 1.01));
   try {
     sim.step();

@@ -19,9 +19,13 @@ enum DensityUpdate : Choice { kDensityAuto = 0, kDensityKick = 1, kDensityDrift 
 enum Packing : Choice { kCubicPacking = 0, kClosePacking = 1 };
 
 // tissue.lateral (model.md §10b): a cluster with free sides, or a slab periodic in x and y whose period
-// follows zero lateral stress in drying, and in compression is held (confined) or keeps following it
-// (unconfined).
-enum LateralBoundary : Choice { kLateralFree = 0, kLateralConfined = 1, kLateralUnconfined = 2 };
+// follows zero lateral stress in drying.
+enum LateralBoundary : Choice { kLateralFree = 0, kLateralPeriodic = 1 };
+
+// compression.lateral (model.md §10b): under the plates a periodic slab's period is held (confined) or
+// keeps following zero lateral stress (unconfined). A separate key from tissue.lateral because the
+// drying does not depend on it: confined and unconfined compressions continue one dried state.
+enum LateralInCompression : Choice { kLateralConfined = 0, kLateralUnconfined = 1 };
 
 struct Params {
   // cell geometry and particles (model.md §1)
@@ -37,6 +41,7 @@ struct Params {
   std::int64_t cells_x = 1, cells_y = 1, cells_z = 1;  // cells along each axis (layers along z)
   Choice packing = kCubicPacking;
   Choice lateral = kLateralFree;
+  Choice compression_lateral = kLateralConfined;  // compression.lateral, for a periodic slab
   double period_viscosity_Pa_s = 0;     // the period strains at -(lateral stress) / this while it follows
   double centre_distance_over_diameter = 0;  // centre distance of touching neighbours / D0
   double diameter_spread = 0;           // standard deviation of the cells' diameters / D0

@@ -425,7 +425,7 @@ void Simulation::cell_contact_terms() {
 // A periodic slab's period follows zero lateral stress in drying, and in compression if unconfined
 // (periodic_slab.hpp); the lists learn the new period and how far the move can have taken a pair.
 void Simulation::follow_lateral_stress(double dt) {
-  if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.lateral != kLateralUnconfined)) return;
+  if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.compression_lateral != kLateralUnconfined)) return;
   try {
     moved_since_lists_m_ += cellsim::follow_lateral_stress(s_, cells_, p_.period_viscosity_Pa_s, dt);
   } catch (const NumericalFailure& e) {

@@ -52,15 +52,20 @@ std::vector<Eigen::Vector3d> lattice_centres(const Params& p, double distance_m)
   return centres;
 }
 
-// tissue.lateral confined or unconfined: the period holds cells_x x cells_y cells of the lattice (model.md §10b).
+// tissue.lateral = periodic: the period holds cells_x x cells_y cells of the lattice (model.md §10b).
 PeriodicBox lattice_period(const Params& p, double distance_m) {
-  if (p.lateral == kLateralFree) return {};
+  if (p.lateral == kLateralFree) {
+    if (p.compression_lateral == kLateralUnconfined)
+      throw InputError("compression.lateral = unconfined needs tissue.lateral = periodic: a cell or a cluster has no "
+                       "period to follow (its sides are free)");
+    return {};
+  }
   if (p.cells_x < 2 || p.cells_y < 2)
-    throw InputError("a periodic tissue.lateral needs tissue.cells_x and tissue.cells_y of at least 2 (got " +
+    throw InputError("tissue.lateral = periodic needs tissue.cells_x and tissue.cells_y of at least 2 (got " +
                      std::to_string(p.cells_x) + " x " + std::to_string(p.cells_y) +
                      "): with one cell to a period a cell would face its own image");
   if (p.packing == kClosePacking && p.cells_y % 2)
-    throw InputError("a periodic tissue.lateral with tissue.packing = close needs an even tissue.cells_y (got " +
+    throw InputError("tissue.lateral = periodic with tissue.packing = close needs an even tissue.cells_y (got " +
                      std::to_string(p.cells_y) + "): the hexagonal rows alternate, so the period is two rows");
   const double row = p.packing == kClosePacking ? std::sqrt(3.0) / 2.0 : 1.0;
   return {distance_m * static_cast<double>(p.cells_x), distance_m * row * static_cast<double>(p.cells_y)};

@@ -45,7 +45,7 @@ struct Tissue {
   std::vector<Eigen::Vector3d> centre_m;  // each cell's centre as built
   std::vector<LamellaBond> lamella;       // facing wall particles, bonded
   double wall_particle_area_m2 = 0;       // the area a wall particle owns: pi D0^2 / N_w
-  PeriodicBox box;                        // tissue.lateral = confined: the lateral period (else none)
+  PeriodicBox box;                        // tissue.lateral = periodic: the lateral period (else none)
 };
 
 // Builds the tissue and fills in the derived parameters of p that are still unset (those of

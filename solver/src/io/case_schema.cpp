@@ -72,10 +72,10 @@ std::vector<ParamSpec> build_specs() {
       choice("tissue.packing", &P::packing, {"cubic", "close"},
              "where the cells' centres sit: cubic (a simple cubic lattice) or close (hexagonal layers stacked "
              "ABC, face-centred cubic)", "model.md §10"),
-      choice("tissue.lateral", &P::lateral, {"free", "confined", "unconfined"},
+      choice("tissue.lateral", &P::lateral, {"free", "periodic"},
              "the sides of the tissue: free (a cluster of cells_x x cells_y x cells_z), or a slab periodic in x and y "
-             "(cells_x x cells_y cells to a period) whose period follows zero lateral stress in drying, and in "
-             "compression is held (confined) or keeps following it (unconfined)", "model.md §10b"),
+             "(cells_x x cells_y cells to a period) whose period follows zero lateral stress in drying "
+             "(compression.lateral says what it does under the plates)", "model.md §10b"),
       real("tissue.period_viscosity_Pa_s", "Pa s", 1.0, &P::period_viscosity_Pa_s, 1, 0, false, 1e6, true,
            "a periodic slab's period strains at -(its lateral stress) / this while it follows zero lateral stress "
            "(1 Pa s: 100 kPa strains it 0.1 per us; relaxation time ~1 us for a slab of modulus ~1 MPa)",
@@ -226,6 +226,10 @@ std::vector<ParamSpec> build_specs() {
            "cover every period, and its stress divides by the period's area", "Eq 22, model.md §8, §10b"),
       real("compression.plate_width_um", "um", kMicro, &P::plate_width_m, 150, 0, false, 1e5, true,
            "plate footprint along y (not used by a periodic slab)", "Eq 22, model.md §8, §10b"),
+      choice("compression.lateral", &P::compression_lateral, {"confined", "unconfined"},
+             "what a periodic slab's period does under the plates: held (confined, as a sample in a die) or "
+             "following zero lateral stress (unconfined); a cell or a cluster takes only confined, the default",
+             "model.md §10b"),
       derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
               "stop compression when the nominal strain reaches this value", "model.md §6",
               "none: run all compression.steps"),
