@@ -194,6 +194,7 @@ TEST(PeriodicTissue, PlatesCoverThePeriodAndTheStressIsOverItsArea) {
   s.plates.force_top_N = 1e-3;
   const Record r = sim.record();
   EXPECT_DOUBLE_EQ(r.plate_stress_Pa, 1e-3 / s.box.area_m2());
+  EXPECT_DOUBLE_EQ(r.footprint_stress_Pa, 1e-3 / s.box.area_m2());  // the slab's footprint is its period
   const PlateLaw law = plate_law(p);
   EXPECT_TRUE(std::isinf(law.length_m) && std::isinf(law.width_m));
   // The slab's volume is the period's area times its height; its porosity lies between 0 and 1.

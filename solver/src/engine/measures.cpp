@@ -110,7 +110,7 @@ const std::vector<Quantity>& quantities() {
       {"section_stress_Pa", "Pa", "F_top / (pi R_c^2), R_c the equatorial radius", &Record::section_stress_Pa},
       {"contact_stress_Pa", "Pa", "F_top / top contact area (NaN without contact)", &Record::contact_stress_Pa},
       {"footprint_stress_Pa", "Pa",
-       "F_top / the footprint: the area of the wall's outline seen from above when compression starts (a tissue's stress)",
+       "F_top / the footprint: the area of the wall's outline seen from above when compression starts, a periodic slab's period (a tissue's stress)",
        &Record::footprint_stress_Pa},
       {"lamella_intact", "1", "middle-lamella bonds between cells not yet broken (0 for one cell)",
        &Record::lamella_intact},
