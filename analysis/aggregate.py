@@ -7,6 +7,7 @@ from analysis.results import drying_summary, flatten, resolved_case, timeseries
 
 STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
 LOAD_WINDOW = (0.05, 0.15)    # nominal strains over which the load partition is averaged
+MODULUS_WINDOW = (0.01, 0.05)  # strains over which the apparent modulus is fitted (Chakespari's initial tangent)
 
 
 def rows_of(summary, study):
@@ -66,11 +67,31 @@ def smoothed_stress_at_strain(ts, strain, stress_column="plate_stress_Pa"):
 def with_compression_series(ts):
     """Adds, NaN in drying (compression starts at the last drying record, where drying ended):
     compression_time_s, the time since the plates started; compression_mass_lost, the share of the
-    fluid's mass at that moment that has left the cell since (Eq 11: the drained bound)."""
+    fluid's mass at that moment that has left the cell since (Eq 11: the drained bound); cell_strain,
+    the strain of the cells away from the plates: a tissue's interior gauge (model.md §10c), a single
+    cell's (or a one-layer tissue's) nominal strain, as the plates press it directly."""
     drying = ts["stage"] == 0
     start = ts[drying].iloc[-1] if drying.any() else ts.iloc[0]
-    return ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - start["time_s"]),
-                     compression_mass_lost=np.where(drying, np.nan, 1.0 - ts["fluid_mass_kg"] / start["fluid_mass_kg"]))
+    out = ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - start["time_s"]),
+                    compression_mass_lost=np.where(drying, np.nan, 1.0 - ts["fluid_mass_kg"] / start["fluid_mass_kg"]))
+    if "nominal_strain" in ts:
+        cell_strain = ts["gauge_strain"].fillna(ts["nominal_strain"]) if "gauge_strain" in ts else ts["nominal_strain"]
+        out["cell_strain"] = np.where(drying, np.nan, cell_strain)
+    return out
+
+
+def apparent_modulus(compression, strain_column, stress_column="footprint_stress_Pa", window=MODULUS_WINDOW):
+    """The slope [Pa] of stress against strain, fitted by least squares to the loading records whose
+    strain lies in `window`: the apparent modulus at small strain (a texture analyser's initial
+    tangent). NaN unless the loading reaches the window's end and holds 5 records in it."""
+    c = loading_branch(compression)
+    if c.empty or strain_column not in c or stress_column not in c:
+        return np.nan
+    e, s = c[strain_column].to_numpy(), c[stress_column].to_numpy()
+    inside = (e >= window[0]) & (e <= window[1]) & np.isfinite(s)
+    if not np.nanmax(e, initial=-np.inf) >= window[1] or inside.sum() < 5:
+        return np.nan
+    return float(np.polyfit(e[inside], s[inside], 1)[0])
 
 
 def load_partition(compression, window=LOAD_WINDOW):
@@ -172,6 +193,9 @@ def summarise(ts):
                                                      if "compression_time_s" in ts else np.nan)
             out[f"footprint_stress_kPa_at_{e:.2f}"] = (smoothed_stress_at_strain(ts, e, "footprint_stress_Pa") / 1e3
                                                        if "footprint_stress_Pa" in ts else np.nan)
+        out["modulus_MPa_nominal"] = apparent_modulus(compression, "nominal_strain") / 1e6
+        out["modulus_MPa_gauge"] = apparent_modulus(compression, "cell_strain") / 1e6
+        out["gauge_strain_at_0.10"] = value_at_strain(ts, 0.10, "cell_strain") if "cell_strain" in ts else np.nan
         force_ratio, fluid_share, backstop_share = load_partition(compression)
         out["load_F_over_pA"] = force_ratio
         out["load_fluid_share"] = fluid_share

@@ -107,8 +107,13 @@ def target_cases(config, cases, target=DEFAULT_TARGET):
     return [c.name for c in cases.values() if studies & set(c.studies)]
 
 
+def figure_studies(spec):
+    """A figure's studies: `study` names one, or lists several whose cases it draws together."""
+    return spec["study"] if isinstance(spec["study"], list) else [spec["study"]]
+
+
 def target_figures(config, target=DEFAULT_TARGET):
-    return [f for f, spec in config["figures"].items() if target_of(config, spec["study"]) == target]
+    return [f for f, spec in config["figures"].items() if target_of(config, figure_studies(spec)[0]) == target]
 
 
 def check(config, root="."):
@@ -146,8 +151,11 @@ def check(config, root="."):
     from analysis.quantities import DRAWABLE  # the solver's time series and those derived from them
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
-        if spec["study"] not in studies:
-            raise ConfigError(f"{where}.study: unknown study '{spec['study']}'; known: {sorted(studies)}")
+        for study in figure_studies(spec):
+            if study not in studies:
+                raise ConfigError(f"{where}.study: unknown study '{study}'; known: {sorted(studies)}")
+        if len({target_of(config, s) for s in figure_studies(spec)}) > 1:
+            raise ConfigError(f"{where}.study: its studies {figure_studies(spec)} belong to different targets")
         for axis in spec.get("where", {}):
             if axis not in axes:
                 raise ConfigError(f"{where}.where.{axis}: unknown axis; known: {sorted(axes)}")
@@ -159,7 +167,11 @@ def check(config, root="."):
         for axis in (lines if isinstance(lines, list) else []):
             if axis not in axes:
                 raise ConfigError(f"{where}.lines: unknown axis '{axis}'; known: {sorted(axes)}")
-        for q in [spec.get("x")] + spec.get("y", []):
+        if spec["family"] == "modulus":
+            from analysis.figures.modulus import TITLES as MODULI
+            if not spec.get("y") or not set(spec["y"]) <= set(MODULI) or "lines" not in spec:
+                raise ConfigError(f"{where}: a modulus figure needs lines and y among {sorted(MODULI)}")
+        for q in [spec.get("x")] + (spec.get("y", []) if spec["family"] != "modulus" else []):
             if q is not None and q not in DRAWABLE:
                 raise ConfigError(f"{where}: unknown quantity '{q}'; known: {sorted(DRAWABLE)}")
         if spec["family"] == "curves" and not ("x" in spec and "y" in spec):
@@ -171,11 +183,12 @@ def check(config, root="."):
             if ref not in shrinkage:
                 raise ConfigError(f"{where}.shrinkage_references: unknown reference '{ref}'; known: {sorted(shrinkage)}")
         band = spec.get("band")
-        if band is not None and (spec["family"] != "curves" or band not in config["studies"][spec["study"]]["vary"]):
+        varied = [config["studies"][s]["vary"] for s in figure_studies(spec)]
+        if band is not None and (spec["family"] != "curves" or not all(band in v for v in varied)):
             raise ConfigError(f"{where}.band: '{band}' must be an axis that study '{spec['study']}' varies, in a "
                               f"curves figure (its values are the ensemble's members)")
-        if spec["family"] == "shrinkage" and "dryness" not in config["studies"][spec["study"]]["vary"]:
-            raise ConfigError(f"{where}: a shrinkage figure needs a study that varies dryness")
+        if spec["family"] in ("shrinkage", "modulus") and not all("dryness" in v for v in varied):
+            raise ConfigError(f"{where}: a {spec['family']} figure needs studies that vary dryness")
         if not figure_cases(config, fig, expand(config)):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
     check_compare_with(config)
@@ -326,7 +339,8 @@ def matches(values, where):
 def figure_cases(config, fig, cases):
     """Names of the cases a figure draws: its study's cases that match its `where`."""
     spec = config["figures"][fig]
-    return [c.name for c in cases.values() if spec["study"] in c.studies and matches(c.values, spec.get("where"))]
+    studies = set(figure_studies(spec))
+    return [c.name for c in cases.values() if studies & set(c.studies) and matches(c.values, spec.get("where"))]
 
 
 def case_json(case):

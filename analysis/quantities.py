@@ -75,6 +75,8 @@ DERIVED = {
     "compression_time_s": ("time in compression [us]", 1e6),
     # The drained bound (Eq 11 in compression): the fluid mass that left since the plates started.
     "compression_mass_lost": ("fluid mass lost in compression [%]", 100.0),
+    # What the cells away from the plates feel (model.md §10c): a tissue's gauge, one cell's nominal strain.
+    "cell_strain": ("interior strain (gauge; a cell: nominal)", 1.0),
 }
 
 DRAWABLE = {**QUANTITIES, **DERIVED}  # what a figure's x and y may name

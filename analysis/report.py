@@ -8,7 +8,7 @@ import pathlib
 import markdown
 
 from analysis import bounds, comparison
-from analysis.matrix import figure_cases
+from analysis.matrix import figure_cases, figure_studies
 
 
 STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
@@ -55,7 +55,8 @@ def frame_table(frame):
 def caption(config, fig, cases):
     spec = config["figures"][fig]
     names = figure_cases(config, fig, cases)
-    text = f"{spec['title']}. {spec.get('caption', '')} Study '{spec['study']}', {len(names)} cases"
+    studies = ", ".join(f"'{s}'" for s in figure_studies(spec))
+    text = f"{spec['title']}. {spec.get('caption', '')} Stud{'ies' if ',' in studies else 'y'} {studies}, {len(names)} cases"
     if spec.get("where"):
         text += " with " + ", ".join(f"{k} = {v}" for k, v in spec["where"].items())
     text += "."

@@ -68,7 +68,17 @@ def snapshot(path, group):
             "stage": int(g.attrs["stage"]), "plate_top_z_m": float(g.attrs["plate_top_z_m"]),
             "plate_bottom_z_m": float(g.attrs["plate_bottom_z_m"]), "triangles": f["mesh/triangles"][()],
             "wall_cell": f["mesh/wall_cell"][()], "fluid_cell": f["mesh/fluid_cell"][()],
+            "period_x_m": period_at(f, float(g.attrs["time_s"])),
         }
+
+
+def period_at(f, time_s):
+    """A periodic slab's period along x at the record nearest `time_s` (NaN for a cell or a cluster,
+    and for files written before slabs)."""
+    if "period_x_m" not in f["timeseries"]:
+        return float("nan")
+    times = f["timeseries/time_s"][()]
+    return float(f["timeseries/period_x_m"][()][int(np.argmin(np.abs(times - time_s)))])
 
 
 def pick_snapshot(path, moment, dried_path=None):

@@ -146,4 +146,27 @@ def check_shrinkage(config, fig, figure, out):
     assert len(references) == len(spec.get("shrinkage_references", [])), fig
 
 
-CHECKS = {"curves": check_curves, "shapes": check_shapes, "model": check_model, "shrinkage": check_shrinkage}
+def check_modulus(config, fig, figure, out):
+    """Moduli against X/X0: a panel per modulus and panel value, a line per group of the line axes,
+    every point a case's modulus at its dryness; the references fitted alike, marked at X/X0 = 1."""
+    spec = config["figures"][fig]
+    cases, runs = render.inputs(config, fig, out)
+    _, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
+    panels = data_panels(figure)
+    n_panel_values = summary[spec["panels"]].nunique() if spec.get("panels") else 1
+    assert len(panels) == n_panel_values * len(spec["y"]), f"{fig}: {len(panels)} panels"
+    moduli = set(np.round(summary[spec["y"]].stack().dropna(), 9))
+    for ax in panels:
+        drawn = [line for line in ax.lines if not is_reference(line)]
+        assert drawn and any(np.isfinite(np.asarray(line.get_ydata(), dtype=float)).any() for line in drawn), fig
+        for line in drawn:
+            x, y = (np.asarray(a, dtype=float) for a in line.get_data())
+            assert set(np.round(x, 12)) <= set(np.round(summary["dryness"], 12)), f"{fig}: {x}"
+            assert set(np.round(y[np.isfinite(y)], 9)) <= moduli, f"{fig}: a point is no case's modulus"
+        references = [line for line in ax.lines if is_reference(line)]
+        assert len(references) == len(spec.get("references", [])), fig
+        assert all(list(line.get_xdata()) == [1.0] for line in references), fig
+
+
+CHECKS = {"curves": check_curves, "shapes": check_shapes, "model": check_model, "shrinkage": check_shrinkage,
+          "modulus": check_modulus}

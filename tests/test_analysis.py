@@ -345,15 +345,40 @@ def test_anchor_runs_are_the_anchor_studies_and_the_ladders_fresh_cells(config):
 def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
     cases = matrix.expand(config)
     tissue = matrix.target_cases(config, cases, "tissue")
-    assert len(tissue) == 9  # 3 dryness x (1, 8, 27 cells)
+    # 3 dryness x (1, 8, 27 cells) in the paper's numerics; in the pressure coupling's: 12 slabs and the
+    # deep one, 6 clusters, 6 single cells.
+    assert len(tissue) == 9 + 13 + 6 + 6
     default = set(matrix.target_cases(config, cases))
     assert {n for n in tissue if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
                                                    "D150_G18_P200_t6_v1_X0.1"}  # one cell: the paper's case
     big = cases["D150_G18_N27_P200_t6_v1_X0.1"]
     assert {k: big.case["tissue"][k] for k in ("cells_x", "cells_y", "cells_z")} == {"cells_x": 3, "cells_y": 3, "cells_z": 3}
     assert big.case["compression"]["plate_length_um"] == 600 and big.dried == "D150_G18_N27_P200_t6_X0.1"
-    assert matrix.target_figures(config, "tissue") == ["tis01", "tis02", "tis03", "tis04"]
+    assert matrix.target_figures(config, "tissue") == [f"tis{i:02d}" for i in range(1, 11)]
     assert not set(matrix.target_figures(config, "tissue")) & set(matrix.target_figures(config))
+
+
+def test_slab_cases_are_periodic_and_confined_and_unconfined_share_one_drying(config):
+    cases = matrix.expand(config)
+    slabs = [c for c in cases.values() if "slab" in c.studies]
+    assert len(slabs) == 12 and all(c.case["tissue"]["lateral"] == "periodic" for c in slabs)
+    assert {c.case["compression"]["lateral"] for c in slabs} == {"confined", "unconfined"}
+    assert {c.case["compression"]["plate_speed_m_s"] for c in slabs} == {4}  # 1 m/s per layer of cells
+    assert len({c.dried for c in slabs}) == 3  # one drying per dryness serves both sides and both L_p
+    deep = [c for c in cases.values() if "slab_deep" in c.studies]
+    assert len(deep) == 1 and deep[0].dried in {c.dried for c in slabs} and deep[0].case["compression"]["end_strain"] == 0.2
+
+
+def test_a_figure_may_draw_several_studies_of_one_target_only(config):
+    cases = matrix.expand(config)
+    drawn = matrix.figure_cases(config, "tis05", cases)
+    assert {s for n in drawn for s in cases[n].studies} >= {"slab", "slab_cluster", "slab_cell"}
+    bad = dict(config, figures=dict(config["figures"], tis05=dict(config["figures"]["tis05"], study=["slab", "plate_speed"])))
+    with pytest.raises(matrix.ConfigError, match=r"figures.tis05.study: its studies .* belong to different targets"):
+        matrix.check(bad, ".")
+    bad = dict(config, figures=dict(config["figures"], tis08=dict(config["figures"]["tis08"], y=["plate_stress_Pa"])))
+    with pytest.raises(matrix.ConfigError, match=r"figures.tis08: a modulus figure needs lines and y among"):
+        matrix.check(bad, ".")
 
 
 def test_shrinkage_figure_needs_known_references_and_a_study_that_dries(config):
@@ -404,3 +429,51 @@ def test_figures_are_saved_the_same_bytes_every_time(tmp_path):
         saved.append((png.read_bytes(), pdf.read_bytes()))
     assert b"CreationDate" not in saved[0][1]
     assert saved[0] == saved[1]
+
+
+def test_cell_strain_is_the_gauge_of_a_tissue_and_the_nominal_strain_of_one_cell():
+    from analysis.aggregate import with_compression_series
+    base = {"time_s": [0.0, 1e-6, 2e-6, 3e-6], "stage": [0, 0, 1, 1], "fluid_mass_kg": [1.0] * 4,
+            "nominal_strain": [np.nan, np.nan, 0.02, 0.06]}
+    tissue = with_compression_series(pd.DataFrame({**base, "gauge_strain": [np.nan, np.nan, 0.01, 0.04]}))
+    cell = with_compression_series(pd.DataFrame({**base, "gauge_strain": [np.nan] * 4}))
+    assert np.isnan(tissue["cell_strain"].to_numpy()[:2]).all()
+    assert tissue["cell_strain"].to_numpy()[2:] == pytest.approx([0.01, 0.04])
+    assert cell["cell_strain"].to_numpy()[2:] == pytest.approx([0.02, 0.06])
+
+
+def test_apparent_modulus_is_the_slope_over_the_window_and_nan_short_of_its_end():
+    from analysis.aggregate import apparent_modulus
+    strain = np.linspace(0.0, 0.08, 81)
+    # 2 MPa inside the window; a toe below it and a steeper branch above it must not enter the fit.
+    stress = np.where(strain < 0.01, 0.5e6 * strain, 2e6 * strain - 0.015e6)
+    stress = np.where(strain > 0.05, stress + 5e6 * (strain - 0.05), stress)
+    c = pd.DataFrame({"nominal_strain": strain, "footprint_stress_Pa": stress})
+    assert apparent_modulus(c, "nominal_strain") == pytest.approx(2e6, rel=1e-9)
+    assert np.isnan(apparent_modulus(c[c["nominal_strain"] < 0.04], "nominal_strain"))
+    assert np.isnan(apparent_modulus(c, "gauge_strain"))  # a run without the column
+
+
+def test_reference_curves_fitted_like_the_runs_give_moduli_near_their_initial_tangents(config, root):
+    from analysis.figures.modulus import reference_modulus_MPa
+    # The reconstructions' initial tangent moduli are 0.93 (Red) and 0.81 MPa (Golden Delicious); over
+    # strains 0.01-0.05 their cubics bend by at most an eighth of that.
+    for name, initial in (("chakespari_red_delicious", 0.93), ("chakespari_golden_delicious", 0.81)):
+        assert reference_modulus_MPa(config, name, root) == pytest.approx(initial, rel=0.15)
+
+
+def test_modulus_table_has_a_row_per_tissue_kind_and_a_column_per_dryness():
+    from analysis.tissue import modulus_table
+    rows = []
+    for cells, sides in ((1, "free"), (16, "confined"), (16, "unconfined")):
+        for x in (1.0, 0.5, 0.1):
+            rows.append({"numerics": "pressure coupling, h0/dx 1.2", "cells": cells, "sides": sides,
+                         "compression L_p": 1e-12, "X/X0": x, "modulus, nominal [MPa]": cells * x,
+                         "modulus, gauge [MPa]": 2 * cells * x})
+    rows.append(dict(rows[-1], **{"modulus, nominal [MPa]": np.nan}))  # a run short of strain 0.05: left out
+    table = modulus_table(pd.DataFrame(rows))
+    assert list(table.columns) == ["numerics", "cells", "sides", "compression L_p", "X/X0 = 1", "X/X0 = 0.5",
+                                   "X/X0 = 0.1"]
+    assert len(table) == 3
+    slab = table[(table["cells"] == 16) & (table["sides"] == "unconfined")].iloc[0]
+    assert slab["X/X0 = 0.5"] == "8.00 / 16.00"

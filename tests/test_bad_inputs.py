@@ -49,7 +49,7 @@ CONFIGS = {
     "study_value_out_of_range.yaml": "cell.turgor_kPa = -100",
     "study_empty_values.yaml": ("[] is too short", "instance['studies']['extra']['vary']['dryness']"),
     "study_value_string.yaml": "axis dryness: case D150_G18_P200_t6_v1_Xhalf has drying.dryness = 'half'",
-    "figure_unknown_family.yaml": ("'pie' is not one of ['model', 'shapes', 'curves', 'shrinkage']",
+    "figure_unknown_family.yaml": ("'pie' is not one of ['model', 'shapes', 'curves', 'shrinkage', 'modulus']",
                                    "instance['figures']['fig99']['family']"),
     "figure_unknown_quantity.yaml": "figures.fig99: unknown quantity 'stres'",
     "figure_unknown_reference.yaml": "figures.fig99.references: unknown reference 'oey2007'",

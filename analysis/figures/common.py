@@ -22,6 +22,13 @@ def value_label(config, axis, value):
     return f"{axis_title(config, axis).split(' [')[0]} = {fmt(value)}" + unit_suffix(config, axis)
 
 
+def line_label(config, spec, axes, key):
+    """A line's label: the figure's own words (`line_labels`, keyed by the line's values joined by
+    ', ', e.g. "16, unconfined"), else each line axis's value label."""
+    own = spec.get("line_labels", {}).get(", ".join(fmt(v) for v in key))
+    return own or ", ".join(value_label(config, a, v) for a, v in zip(axes, key))
+
+
 def unit_suffix(config, axis):
     title = axis_title(config, axis)
     return " " + title[title.index("[") + 1:title.index("]")] if "[" in title else ""

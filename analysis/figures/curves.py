@@ -7,7 +7,8 @@ import numpy as np
 
 from analysis import quantities
 from analysis.ensembles import BAND_PERCENTILES, band
-from analysis.figures.common import legend_below, line_colours, ordered, panel_letter, row_with_legend, value_label
+from analysis.figures.common import (legend_below, line_colours, line_label, ordered, panel_letter, row_with_legend,
+                                     value_label)
 from analysis.references import load as load_reference
 
 
@@ -28,7 +29,7 @@ def draw(config, fig, series, root=".", overlay=None):
     panels = [(y, pv) for pv in panel_values for y in ys]
     grouper = line_axes[0] if len(line_axes) == 1 else line_axes
     n_lines = series.groupby(grouper).ngroups if line_axes else 1
-    n_references = len(spec.get("references", [])) if x == "nominal_strain" and any(map(is_stress, ys)) else 0
+    n_references = len(spec.get("references", [])) if is_strain(x) and any(map(is_stress, ys)) else 0
 
     per_line = 2 if spec.get("band") else 1  # a band's line and its shaded band each have an entry
     n_styles = 2 if overlay is not None else 0  # the two runs' line styles
@@ -40,7 +41,7 @@ def draw(config, fig, series, root=".", overlay=None):
         colours = line_colours(len(groups))
         for (key, curve), colour in zip(groups, colours):
             key = key if isinstance(key, tuple) else (key,)
-            label = ", ".join(value_label(config, a, v) for a, v in zip(line_axes, key))
+            label = line_label(config, spec, line_axes, key)
             if spec.get("band"):
                 _draw_band(ax, curve, spec["band"], x, y, colour, label)
                 continue
@@ -52,7 +53,7 @@ def draw(config, fig, series, root=".", overlay=None):
         if overlay is not None:
             ax.plot([], [], color="0.3", lw=1.4, label=f"solid: {overlay[2]}")
             ax.plot([], [], color="0.3", lw=1.0, ls="--", label=f"dashed: {overlay[1]}")
-        if x == "nominal_strain" and is_stress(y):
+        if is_strain(x) and is_stress(y):
             _draw_references(config, spec, ax, root)
         title = panel_letter(k) if len(panels) > 1 else ""
         if pv is not None:
@@ -86,6 +87,11 @@ def _draw_other(ax, other_series, case, x, y, colour):
     curve = other_series[other_series["case"] == case].sort_values("time_s")
     if not curve.empty:
         ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.0, ls="--")
+
+
+def is_strain(quantity):
+    """A strain of the cells (nominal, the interior's): tissue data's strain shares its axis."""
+    return quantity in ("nominal_strain", "cell_strain", "gauge_strain")
 
 
 def is_stress(quantity):

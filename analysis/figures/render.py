@@ -1,7 +1,7 @@
 """One figure of the config drawn from a results folder, as the workflow draws it: the `figure` rule
 (workflow/scripts/figure.py) and the tests that check a figure's content call this one function."""
 from analysis import aggregate, comparison, matrix
-from analysis.figures import curves, model, shapes, shrinkage
+from analysis.figures import curves, model, modulus, shapes, shrinkage
 
 
 def inputs(config, fig, output_dir):
@@ -16,10 +16,10 @@ def draw(config, fig, output_dir, root="."):
     """The matplotlib Figure of `fig` (a key of config['figures']) from the runs under output_dir."""
     family = config["figures"][fig]["family"]
     cases, runs = inputs(config, fig, output_dir)
-    if family in ("curves", "shrinkage"):
+    if family in ("curves", "shrinkage", "modulus"):
         series, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
-        if family == "shrinkage":
-            return shrinkage.draw(config, fig, summary, root)
+        if family in ("shrinkage", "modulus"):
+            return (shrinkage if family == "shrinkage" else modulus).draw(config, fig, summary, root)
         return curves.draw(config, fig, series, root, overlay=other_run_series(config, fig, cases))
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, cases)
 

@@ -56,12 +56,19 @@ def draw_slice(ax, snap, plate_length_m, scale=1e6):
     near = np.abs(fluid[:, 1] - centre[1]) < max(spacing, 2e-6) * 2
     ax.scatter((fluid[near, 0] - centre[0]) * scale, (fluid[near, 2] - centre[2]) * scale, s=4, c="tab:blue",
                alpha=0.6, linewidths=0)
-    half = 0.5 * plate_length_m * scale
+    period = snap.get("period_x_m", float("nan")) * scale
+    reach = np.abs(wall[:, [0, 2]] - centre[[0, 2]]).max() * scale * 1.1
+    # A periodic slab's plates cover every period (model.md §10b): drawn across the panel, with the
+    # period that repeats marked by dashed lines about the slab's centre.
+    half = 0.5 * plate_length_m * scale if not np.isfinite(period) else reach
     for z in (snap["plate_top_z_m"], snap["plate_bottom_z_m"]):
         if np.isfinite(z):
             ax.plot([-half, half], [(z - centre[2]) * scale] * 2, color="black", lw=2.5)
+    if np.isfinite(period):
+        for x in (-0.5 * period, 0.5 * period):
+            ax.axvline(x, color="grey", ls="--", lw=0.8)
     # Square limits that hold the plates and the whole wall (a 200 um cell is wider than the plates).
-    reach = max(half, np.abs(wall[:, [0, 2]] - centre[[0, 2]]).max() * scale) * 1.1
+    reach = max(half, reach)
     ax.set_aspect("equal")
     ax.set_xlim(-reach, reach)
     ax.set_ylim(-reach, reach)
@@ -83,7 +90,7 @@ def draw(config, fig, runs, cases):
 
     rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
     figure, axes = grid(len(rows), len(cols), panel_w=2.7, panel_h=2.7)
-    tissue = False
+    tissue = periodic = False
     for i, rv in enumerate(rows):
         for j, cv in enumerate(cols):
             ax = axes[i][j]
@@ -97,6 +104,7 @@ def draw(config, fig, runs, cases):
             path, dried = runs[match[0].name]
             snap = pick_snapshot(path, moment, dried)
             tissue = tissue or snap["wall_cell"].max() > 0
+            periodic = periodic or np.isfinite(snap["period_x_m"])
             plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
             draw_slice(ax, snap, plate_length)
             label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
@@ -108,5 +116,6 @@ def draw(config, fig, runs, cases):
             if i == len(rows) - 1:
                 ax.set_xlabel("x [um]", fontsize=8)
     walls = "walls coloured by cell" if tissue else "wall green"
-    figure.suptitle(spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black)", fontsize=10)
+    period = ", the period dashed" if periodic else ""
+    figure.suptitle(spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black{period})", fontsize=10)
     return figure
