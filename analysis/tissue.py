@@ -38,22 +38,51 @@ def first_break_strain(series):
     return fewer["nominal_strain"].iloc[0] if len(fewer) else np.nan
 
 
+def sides(row):
+    """free (a cell or a cluster), or what a periodic slab's period did under the plates."""
+    return row["compression.lateral"] if row.get("tissue.lateral") == "periodic" else "free"
+
+
+def numerics(row):
+    """The coupling and resolution a case ran with, in words (its single cell is the one alike)."""
+    return ("pressure coupling, h0/dx 1.2" if row["coupling.model"] == "pressure" else "paper's (LJ)")
+
+
+def single_cell_of(rows, row):
+    """The single cell of the same numerics, dryness and compression L_p as `row` (None if none ran)."""
+    alike = rows[(rows["cells"] == 1) & np.isclose(rows["dryness"], row["dryness"])
+                 & (rows["coupling.model"] == row["coupling.model"])
+                 & np.isclose(rows["compression.Lp_m_per_s_Pa"], row["compression.Lp_m_per_s_Pa"])]
+    return alike.iloc[0] if len(alike) else None
+
+
 def table(config, summary, series, runs, target="tissue"):
-    """One row per case of the target's studies: cells, dryness, shrinkage, porosity, stresses (and
-    their ratio to the single cell's at the same dryness), bonds."""
+    """One row per case of the target's studies: numerics, cells, sides, drainage, dryness, shrinkage,
+    porosity, stresses at nominal strains, the gauge, the apparent moduli (and their ratio to the
+    single cell's of the same numerics, dryness and drainage), bonds."""
     studies = [s for s in config["studies"] if target_of(config, s) == target]
     rows = summary[summary["studies"].str.split().apply(lambda s: bool(set(studies) & set(s)))].copy()
-    single = rows[rows["cells"] == 1].set_index("dryness")
     out = []
-    for _, r in rows.sort_values(["cells", "dryness"], ascending=[True, False]).iterrows():
-        line = {"cells": int(r["cells"]), "X/X0": r["dryness"], "case": r["case"],
+    order = rows.assign(_sides=rows.apply(sides, axis=1)).sort_values(
+        ["coupling.model", "cells", "_sides", "compression.Lp_m_per_s_Pa", "compression.end_strain", "dryness"],
+        ascending=[True, True, True, True, True, False])
+    for _, r in order.iterrows():
+        alone = single_cell_of(rows, r)
+        line = {"numerics": numerics(r), "cells": int(r["cells"]), "sides": sides(r),
+                "compression L_p": r["compression.Lp_m_per_s_Pa"], "X/X0": r["dryness"], "case": r["case"],
                 "cells' V/V0 (dried)": r["dried_V_over_V0"], "tissue V/V0 (hull, dried)": r["dried_tissue_V_over_V0"],
                 "porosity (dried)": r["dried_porosity"]}
         for e in STRAINS:
             stress = r.get(f"footprint_stress_kPa_at_{e}", np.nan)
             line[f"stress at {e} [kPa]"] = stress
-            alone = single["footprint_stress_kPa_at_" + e].get(r["dryness"], np.nan) if len(single) else np.nan
-            line[f"x single cell at {e}"] = stress / alone if r["cells"] > 1 and alone else np.nan
+            base = alone[f"footprint_stress_kPa_at_{e}"] if alone is not None else np.nan
+            line[f"x single cell at {e}"] = stress / base if r["cells"] > 1 and base else np.nan
+        line["gauge at nominal 0.10"] = r.get("gauge_strain_at_0.10", np.nan)
+        line["modulus, nominal [MPa]"] = r.get("modulus_MPa_nominal", np.nan)
+        line["modulus, gauge [MPa]"] = r.get("modulus_MPa_gauge", np.nan)
+        base = alone["modulus_MPa_gauge"] if alone is not None else np.nan
+        line["modulus x single cell"] = line["modulus, gauge [MPa]"] / base if r["cells"] > 1 and base else np.nan
+        line["strain reached"] = r.get("strain_reached", np.nan)
         if r["cells"] > 1:
             bonds = r["lamella_bonds"]
             line.update({"bonds": int(bonds), "broken in drying": int(bonds - r["dried_lamella_intact"]),
@@ -66,20 +95,57 @@ def table(config, summary, series, runs, target="tissue"):
     return pd.DataFrame(out)
 
 
+def modulus_table(frame):
+    """The apparent moduli [MPa] (over the nominal strain / over the interior cells' strain), a row per
+    numerics, cells, sides and drainage, a column per dryness: one number per cell of the issue's table.
+    Runs that stop short of the fit's window (nominal strain 0.05) are left out; '-' where the gauge
+    stops short of it."""
+    runs = frame[frame["modulus, nominal [MPa]"].notna()].drop_duplicates(
+        ["numerics", "cells", "sides", "compression L_p", "X/X0"])
+    if runs.empty:
+        return pd.DataFrame()
+    def text(value):
+        return f"{value:.2f}" if np.isfinite(value) else "-"
+    cell = runs.assign(modulus=[f"{text(n)} / {text(g)}" for n, g in zip(runs["modulus, nominal [MPa]"],
+                                                                         runs["modulus, gauge [MPa]"])])
+    wide = cell.pivot_table(index=["numerics", "cells", "sides", "compression L_p"], columns="X/X0", values="modulus",
+                            aggfunc="first")
+    wide = wide[sorted(wide.columns, reverse=True)]
+    wide.columns = [f"X/X0 = {x:g}" for x in wide.columns]
+    return wide.reset_index()
+
+
 def write_page(path, config, frame, figure_files, target="tissue"):
     here = pathlib.Path(path).parent
     parts = ["<h1>Tissues: cells bonded by a middle lamella, dried and compressed</h1>",
              "<p>The paper's future work (docs/model.md §10). Each tissue is built of the paper's baseline cell, "
              "faceted where it meets its neighbours and bonded to them through middle-lamella bonds that soften past "
              "a peak strength and separate for good once they have taken their fracture energy; every cell dries "
-             "by Eq 11 through its own wall, and the tissue is compressed between plates wider than it. A tissue's "
-             "walls repel its fluid 3x harder than the single cell's (coupling.repulsion_f0_N_m): its bonded cells "
-             "reach several times the single cell's pressure. Stress is the top-plate force over the footprint "
-             "(the outline of all walls seen from above) at the start of compression, for the tissues and the single cell alike; 'x single "
-             "cell' is the tissue's stress over the single cell's at the same dryness and strain. The tissue's "
-             "volume is the convex hull of its walls, its porosity the part of that hull outside every cell. "
-             "Choices and their reasons: model closures, 'Tissue'.</p>"]
+             "by Eq 11 through its own wall. Two kinds of tissue: clusters (2 x 2 x 2, 3 x 3 x 3) between plates "
+             "wider than them, with free sides, and a slab periodic in x and y (2 x 2 cells to a period, 4 layers; "
+             "model.md §10b), whose period follows zero lateral stress as it dries and under the plates is held "
+             "(confined) or keeps following (unconfined). Two numerics: the paper's (LJ coupling, level 1; "
+             "its tissues' walls repel their fluid 3x harder than the single cell's), and the pressure coupling "
+             "at h0/dx 1.2, level 1 (the slab, a cluster and the single cell beside it, each plate at 1 m/s "
+             "per layer of cells, so that every cell is strained at the single cell's rate), closed and drained "
+             "(compression L_p 1e-6). Stress is the top-plate force over the footprint at the start of "
+             "compression (the outline of all walls seen from above; a slab's period), for every tissue and the "
+             "single cell alike; 'x single cell' is a tissue's stress or modulus over the single cell's of the same "
+             "numerics, dryness and drainage. The gauge is the interior cells' strain (model.md §10c). The "
+             "tissue's volume is the convex hull of its walls, its porosity the part of that hull outside every "
+             "cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
     parts.append("<h2>Tissues against the single cell</h2>")
     parts.append(report.frame_table(frame.drop(columns=["case"])))
+    moduli = modulus_table(frame)
+    if len(moduli):
+        parts.append("<h2>Apparent modulus at small strain</h2>")
+        parts.append("<p>The slope of stress (force over the footprint at compression start; a periodic slab's "
+                     "footprint is its period) against strain, fitted over strains 0.01-0.05, in MPa: over the "
+                     "plates' nominal strain / over the interior cells' strain (a tissue's gauge between the "
+                     "centroid planes of its layers away from the plates, model.md §10c; one cell's nominal "
+                     "strain). Fresh apple tissue: initial tangent moduli 0.81-0.93 MPa (Chakespari et al., "
+                     "figure tis08 fits the reconstructed curves alike). Closed: compression L_p 1e-12; "
+                     "drained: 1e-6 (docs/model-closures.md, the drained bound).</p>")
+        parts.append(report.frame_table(moduli))
     parts.append(report.figure_list(config, figure_files, here))
     report.write_page(path, f"cellsim {target}", parts)
