@@ -345,9 +345,9 @@ def test_anchor_runs_are_the_anchor_studies_and_the_ladders_fresh_cells(config):
 def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
     cases = matrix.expand(config)
     tissue = matrix.target_cases(config, cases, "tissue")
-    # 3 dryness x (1, 8, 27 cells) in the paper's numerics; in the pressure coupling's: 12 slabs and the
-    # deep one, 6 clusters, 6 single cells.
-    assert len(tissue) == 9 + 13 + 6 + 6
+    # 3 dryness x (1, 8, 27 cells) in the paper's numerics; in the pressure coupling's: 12 slabs, the
+    # deep one and the fresh ones at 4 m/s, 6 clusters, 6 single cells.
+    assert len(tissue) == 9 + 13 + 2 + 6 + 6
     default = set(matrix.target_cases(config, cases))
     assert {n for n in tissue if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
                                                    "D150_G18_P200_t6_v1_X0.1"}  # one cell: the paper's case
@@ -363,7 +363,7 @@ def test_slab_cases_are_periodic_and_confined_and_unconfined_share_one_drying(co
     slabs = [c for c in cases.values() if "slab" in c.studies]
     assert len(slabs) == 12 and all(c.case["tissue"]["lateral"] == "periodic" for c in slabs)
     assert {c.case["compression"]["lateral"] for c in slabs} == {"confined", "unconfined"}
-    assert {c.case["compression"]["plate_speed_m_s"] for c in slabs} == {4}  # 1 m/s per layer of cells
+    assert {c.case["compression"]["plate_speed_m_s"] for c in slabs} == {1}  # the paper's and the cell's
     assert len({c.dried for c in slabs}) == 3  # one drying per dryness serves both sides and both L_p
     deep = [c for c in cases.values() if "slab_deep" in c.studies]
     assert len(deep) == 1 and deep[0].dried in {c.dried for c in slabs} and deep[0].case["compression"]["end_strain"] == 0.2
