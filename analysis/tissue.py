@@ -64,12 +64,13 @@ def table(config, summary, series, runs, target="tissue"):
     rows = summary[summary["studies"].str.split().apply(lambda s: bool(set(studies) & set(s)))].copy()
     out = []
     order = rows.assign(_sides=rows.apply(sides, axis=1)).sort_values(
-        ["coupling.model", "cells", "_sides", "compression.Lp_m_per_s_Pa", "compression.end_strain", "dryness"],
-        ascending=[True, True, True, True, True, False])
+        ["coupling.model", "cells", "_sides", "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa",
+         "compression.end_strain", "dryness"], ascending=[True, True, True, True, True, True, False])
     for _, r in order.iterrows():
         alone = single_cell_of(rows, r)
         line = {"numerics": numerics(r), "cells": int(r["cells"]), "sides": sides(r),
-                "compression L_p": r["compression.Lp_m_per_s_Pa"], "X/X0": r["dryness"], "case": r["case"],
+                "plate [m/s]": r["compression.plate_speed_m_s"], "compression L_p": r["compression.Lp_m_per_s_Pa"],
+                "X/X0": r["dryness"], "case": r["case"],
                 "cells' V/V0 (dried)": r["dried_V_over_V0"], "tissue V/V0 (hull, dried)": r["dried_tissue_V_over_V0"],
                 "porosity (dried)": r["dried_porosity"]}
         for e in STRAINS:
@@ -100,16 +101,15 @@ def modulus_table(frame):
     numerics, cells, sides and drainage, a column per dryness: one number per cell of the issue's table.
     Runs that stop short of the fit's window (nominal strain 0.05) are left out; '-' where the gauge
     stops short of it."""
-    runs = frame[frame["modulus, nominal [MPa]"].notna()].drop_duplicates(
-        ["numerics", "cells", "sides", "compression L_p", "X/X0"])
+    kind = ["numerics", "cells", "sides", "plate [m/s]", "compression L_p"]
+    runs = frame[frame["modulus, nominal [MPa]"].notna()].drop_duplicates(kind + ["X/X0"])
     if runs.empty:
         return pd.DataFrame()
     def text(value):
         return f"{value:.2f}" if np.isfinite(value) else "-"
     cell = runs.assign(modulus=[f"{text(n)} / {text(g)}" for n, g in zip(runs["modulus, nominal [MPa]"],
                                                                          runs["modulus, gauge [MPa]"])])
-    wide = cell.pivot_table(index=["numerics", "cells", "sides", "compression L_p"], columns="X/X0", values="modulus",
-                            aggfunc="first")
+    wide = cell.pivot_table(index=kind, columns="X/X0", values="modulus", aggfunc="first")
     wide = wide[sorted(wide.columns, reverse=True)]
     wide.columns = [f"X/X0 = {x:g}" for x in wide.columns]
     return wide.reset_index()

@@ -28,8 +28,9 @@ def test_tissue_table_compares_each_tissue_with_the_single_cell(tissue_run):
 def test_the_slab_beside_the_cluster_and_the_cell_in_one_numerics(tissue_run):
     table = pd.read_csv(tissue_run / "tables" / "tissue" / "tissue.csv")
     ours = table[table["numerics"] != "paper's (LJ)"]
-    assert sorted(zip(ours["cells"], ours["sides"], ours["compression L_p"])) == [
-        (1, "free", 1e-12), (1, "free", 1e-6), (8, "free", 1e-12), (16, "confined", 1e-12), (16, "unconfined", 1e-12)]
+    assert sorted(zip(ours["cells"], ours["sides"], ours["plate [m/s]"], ours["compression L_p"])) == [
+        (1, "free", 1, 1e-12), (1, "free", 1, 1e-6), (8, "free", 1, 1e-12), (16, "confined", 1, 1e-12),
+        (16, "confined", 4, 1e-12), (16, "unconfined", 1, 1e-12)]
     slabs = ours[ours["cells"] == 16]
     # Fresh, built from a lattice: nothing breaks in drying, the period's footprint holds the cells.
     assert (slabs["broken in drying"] == 0).all() and slabs["porosity (dried)"].between(0.2, 0.4).all()
@@ -48,4 +49,4 @@ def test_page_figures_and_3d_views_are_written_and_the_default_target_is_not(roo
     views = sorted((tissue_run / "report" / "cells").glob("D150_*N8*.data.js"))  # the paper's numerics
     assert len(views) == 2 and '"n_cells": 8' in views[0].read_text()
     slabs = sorted((tissue_run / "report" / "cells").glob("*N16*.data.js"))
-    assert len(slabs) == 2 and '"n_cells": 16' in slabs[0].read_text()
+    assert len(slabs) == 3 and '"n_cells": 16' in slabs[0].read_text()
