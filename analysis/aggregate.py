@@ -72,12 +72,12 @@ def with_compression_series(ts):
     cell's (or a one-layer tissue's) nominal strain, as the plates press it directly."""
     drying = ts["stage"] == 0
     start = ts[drying].iloc[-1] if drying.any() else ts.iloc[0]
-    out = ts.assign(compression_time_s=np.where(drying, np.nan, ts["time_s"] - start["time_s"]),
-                    compression_mass_lost=np.where(drying, np.nan, 1.0 - ts["fluid_mass_kg"] / start["fluid_mass_kg"]))
+    derived = {"compression_time_s": np.where(drying, np.nan, ts["time_s"] - start["time_s"]),
+               "compression_mass_lost": np.where(drying, np.nan, 1.0 - ts["fluid_mass_kg"] / start["fluid_mass_kg"])}
     if "nominal_strain" in ts:
         cell_strain = ts["gauge_strain"].fillna(ts["nominal_strain"]) if "gauge_strain" in ts else ts["nominal_strain"]
-        out["cell_strain"] = np.where(drying, np.nan, cell_strain)
-    return out
+        derived["cell_strain"] = np.where(drying, np.nan, cell_strain)
+    return ts.assign(**derived)
 
 
 def apparent_modulus(compression, strain_column, stress_column="footprint_stress_Pa", window=MODULUS_WINDOW):

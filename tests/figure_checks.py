@@ -10,7 +10,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from analysis import aggregate, ensembles, quantities
 from analysis.figures import common, render
 from analysis.figures.common import ordered
-from analysis.figures.curves import is_stress
+from analysis.figures.curves import is_strain, is_stress
 
 
 def coloured(line, colour):
@@ -86,7 +86,7 @@ def check_curves(config, fig, figure, out):
             del unmatched[match]
             assert visible(ax, lx, ly), f"{fig} panel {k}: the curve of {match} lies outside the axes"
         references = [line for line in ax.lines if is_reference(line)]
-        wanted = spec.get("references", []) if x == "nominal_strain" and is_stress(y) else []
+        wanted = spec.get("references", []) if is_strain(x) and is_stress(y) else []
         assert [line.get_label() for line in references] == [config["references"][r]["label"] for r in wanted], \
             f"{fig} panel {k}: reference curves {[line.get_label() for line in references]}"
         for line in references:
