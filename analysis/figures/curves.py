@@ -35,11 +35,14 @@ def draw(config, fig, series, root=".", overlay=None):
     n_styles = 2 if overlay is not None else 0  # the two runs' line styles
     figure, axes, legend_axes = row_with_legend(len(panels), per_line * n_lines + n_references + n_styles,
                                                 sharey=len(ys) == 1)
+    # One colour per line across all panels, so that a panel missing some lines keeps the legend's colours.
+    keys = sorted(series.groupby(grouper).groups, reverse=True) if line_axes else [()]
+    colour_of = dict(zip(keys, line_colours(len(keys))))
     for k, ((y, pv), ax) in enumerate(zip(panels, axes)):
         data = series if pv is None else series[np.isclose(series[panel_axis], pv)]
         groups = sorted(data.groupby(grouper) if line_axes else [((), data)], key=lambda g: g[0], reverse=True)
-        colours = line_colours(len(groups))
-        for (key, curve), colour in zip(groups, colours):
+        for key, curve in groups:
+            colour = colour_of[key]
             key = key if isinstance(key, tuple) else (key,)
             label = line_label(config, spec, line_axes, key)
             if spec.get("band"):
