@@ -148,7 +148,7 @@ def check(config, root="."):
         for ref, spec in entries.items():
             if not (pathlib.Path(root) / spec["file"]).is_file():
                 raise ConfigError(f"{section}.{ref}.file: no such file '{spec['file']}'")
-    from analysis.quantities import DRAWABLE  # the solver's time series and those derived from them
+    from analysis.quantities import DRAWABLE, MODULI  # the solver's time series, those derived, the moduli
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
         for study in figure_studies(spec):
@@ -168,7 +168,6 @@ def check(config, root="."):
             if axis not in axes:
                 raise ConfigError(f"{where}.lines: unknown axis '{axis}'; known: {sorted(axes)}")
         if spec["family"] == "modulus":
-            from analysis.figures.modulus import TITLES as MODULI
             if not spec.get("y") or not set(spec["y"]) <= set(MODULI) or "lines" not in spec:
                 raise ConfigError(f"{where}: a modulus figure needs lines and y among {sorted(MODULI)}")
         for q in [spec.get("x")] + (spec.get("y", []) if spec["family"] != "modulus" else []):

@@ -81,6 +81,9 @@ DERIVED = {
 
 DRAWABLE = {**QUANTITIES, **DERIVED}  # what a figure's x and y may name
 
+# The apparent moduli of the summary table (analysis/aggregate.py), what a modulus figure's y may name.
+MODULI = {"modulus_MPa_nominal": "over the nominal strain", "modulus_MPa_gauge": "over the interior cells' strain"}
+
 
 def label(name):
     return DRAWABLE[name][0]

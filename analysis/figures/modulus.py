@@ -9,9 +9,8 @@ import pandas as pd
 from analysis.aggregate import MODULUS_WINDOW, apparent_modulus
 from analysis.figures.common import (legend_below, line_colours, line_label, ordered, panel_letter, row_with_legend,
                                      value_label)
+from analysis.quantities import MODULI as TITLES
 from analysis.references import load as load_reference
-
-TITLES = {"modulus_MPa_nominal": "over the nominal strain", "modulus_MPa_gauge": "over the interior cells' strain"}
 
 
 def reference_modulus_MPa(config, name, root="."):
