@@ -2,16 +2,20 @@
 dryness, the shrinkage and porosity at the end of drying, the stress at strains 0.05 and 0.10 against
 the single cell's (stress = top-plate force / footprint at compression start, for both), and the
 middle-lamella bonds: how many broke, when, and on which faces."""
+import html
 import pathlib
 
 import numpy as np
 import pandas as pd
 
-from analysis import report
-from analysis.matrix import target_of
+from analysis import matrix, report
+from analysis.references import load as load_reference
 from analysis.results import open_result
 
 STRAINS = ("0.05", "0.10")
+# A compression L_p above this lets a cell's water out within the compression (docs/model-closures.md,
+# the drained bound: 1e-6 drained, 1e-12 closed).
+DRAINED_LP = 1e-9
 
 
 def broken_bonds_by_face(path):
@@ -49,9 +53,11 @@ def numerics(row):
 
 
 def single_cell_of(rows, row):
-    """The single cell of the same numerics, dryness and compression L_p as `row` (None if none ran)."""
+    """The single cell of the same numerics, dryness, plate speed and compression L_p as `row` (None if
+    none ran: a tissue at a speed no single cell ran at is compared with none)."""
     alike = rows[(rows["cells"] == 1) & np.isclose(rows["dryness"], row["dryness"])
                  & (rows["coupling.model"] == row["coupling.model"])
+                 & np.isclose(rows["compression.plate_speed_m_s"], row["compression.plate_speed_m_s"])
                  & np.isclose(rows["compression.Lp_m_per_s_Pa"], row["compression.Lp_m_per_s_Pa"])]
     return alike.iloc[0] if len(alike) else None
 
@@ -60,7 +66,7 @@ def table(config, summary, series, runs, target="tissue"):
     """One row per case of the target's studies: numerics, cells, sides, drainage, dryness, shrinkage,
     porosity, stresses at nominal strains, the gauge, the apparent moduli (and their ratio to the
     single cell's of the same numerics, dryness and drainage), bonds."""
-    studies = [s for s in config["studies"] if target_of(config, s) == target]
+    studies = [s for s in config["studies"] if matrix.target_of(config, s) == target]
     rows = summary[summary["studies"].str.split().apply(lambda s: bool(set(studies) & set(s)))].copy()
     out = []
     order = rows.assign(_sides=rows.apply(sides, axis=1)).sort_values(
@@ -115,6 +121,56 @@ def modulus_table(frame):
     return wide.reset_index()
 
 
+def apple_stress_kPa(config, names, root="."):
+    """{reference label: its stress [kPa] at each of STRAINS}, interpolated on the reference curves."""
+    out = {}
+    for name in names:
+        strain, stress = load_reference(config["references"][name], root)
+        out[config["references"][name]["label"]] = [float(np.interp(float(e), strain, stress)) for e in STRAINS]
+    return out
+
+
+def conjecture_table(frame, apple_kPa):
+    """Each periodic slab beside the single cell of the same numerics, dryness, plate speed and drainage:
+    its stress over the cell's at STRAINS, its modulus over the interior strain over the cell's, and
+    (fresh cells only) its stress over the apple references' at the same strains (their range)."""
+    slabs = frame[frame["sides"].isin(["confined", "unconfined"]) & frame["x single cell at 0.05"].notna()]
+    out = []
+    for _, r in slabs.iterrows():
+        fresh = np.isclose(r["X/X0"], 1.0)
+        line = {"numerics": r["numerics"], "X/X0": r["X/X0"], "sides": r["sides"], "plate [m/s]": r["plate [m/s]"],
+                "drainage": "drained" if r["compression L_p"] > DRAINED_LP else "closed"}
+        for e in STRAINS:
+            line[f"x single cell at {e}"] = r[f"x single cell at {e}"]
+        line["modulus (gauge) x single cell"] = r["modulus x single cell"]
+        for k, e in enumerate(STRAINS):
+            ratios = [r[f"stress at {e} [kPa]"] / v[k] for v in apple_kPa.values()] if fresh else []
+            finite = bool(ratios) and np.all(np.isfinite(ratios))
+            line[f"x apple at {e}"] = f"{min(ratios):.1f}-{max(ratios):.1f}" if finite else "-"
+        out.append(line)
+    return pd.DataFrame(out)
+
+
+def conjecture_answer(compared):
+    """The paper's conjecture (a tissue's stress-strain gradient "significantly less" than one cell's),
+    answered in one sentence from `conjecture_table`'s rows."""
+    if compared.empty:
+        return ("No periodic slab has run beside a single cell of the same numerics, dryness, plate speed "
+                "and drainage yet, so the conjecture is not answered here.")
+    parts = []
+    for e in STRAINS:
+        ratio = compared[f"x single cell at {e}"].dropna()
+        if len(ratio):
+            parts.append(f"at nominal strain {e} {int((ratio < 1).sum())} of {len(ratio)} carry less stress than "
+                         f"their cell ({ratio.min():.2f}-{ratio.max():.2f} times its stress)")
+    modulus = compared["modulus (gauge) x single cell"].dropna()
+    if len(modulus):
+        parts.append(f"over the interior strain {int((modulus < 1).sum())} of {len(modulus)} have a lower "
+                     f"modulus ({modulus.min():.2f}-{modulus.max():.2f} times the cell's)")
+    return (f"Is a tissue less stiff than one cell? Of {len(compared)} periodic slabs beside a single cell of the "
+            "same numerics, dryness, plate speed and drainage, " + "; ".join(parts) + ".")
+
+
 def write_page(path, config, frame, figure_files, target="tissue"):
     here = pathlib.Path(path).parent
     parts = ["<h1>Tissues: cells bonded by a middle lamella, dried and compressed</h1>",
@@ -146,5 +202,15 @@ def write_page(path, config, frame, figure_files, target="tissue"):
                      "figure tis08 fits the reconstructed curves alike). Closed: compression L_p 1e-12; "
                      "drained: 1e-6 (docs/model-closures.md, the drained bound).</p>")
         parts.append(report.frame_table(moduli))
+    references = sorted({n for f in matrix.target_figures(config, target)
+                         for n in config["figures"][f].get("references", [])})
+    compared = conjecture_table(frame, apple_stress_kPa(config, references))
+    parts.append("<h2>The paper's conjecture: is a tissue less stiff than one cell?</h2>")
+    parts.append(f"<p>{html.escape(conjecture_answer(compared))} A ratio below 1 answers yes. 'x apple' is the "
+                 "fresh slab's stress over the fresh apple tissue's at the same nominal strain (the range over "
+                 f"{', '.join(html.escape(config['references'][n]['label']) for n in references) or 'no reference'}). "
+                 "What the numbers point to: docs/model-closures.md, 'The tissue study'.</p>")
+    if len(compared):
+        parts.append(report.frame_table(compared))
     parts.append(report.figure_list(config, figure_files, here))
     report.write_page(path, f"cellsim {target}", parts)

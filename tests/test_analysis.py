@@ -477,3 +477,38 @@ def test_modulus_table_has_a_row_per_tissue_kind_and_a_column_per_dryness():
     assert len(table) == 3
     slab = table[(table["cells"] == 16) & (table["sides"] == "unconfined")].iloc[0]
     assert slab["X/X0 = 0.5"] == "8.00 / 16.00"
+
+
+def test_conjecture_is_answered_from_the_slabs_beside_their_single_cell(tmp_path):
+    from analysis.tissue import apple_stress_kPa, conjecture_answer, conjecture_table
+    (tmp_path / "apple.csv").write_text("strain,stress\n0,0\n0.2,200\n")  # 1 MPa, linear
+    config = {"references": {"apple": {"file": "apple.csv", "header_rows": 1, "strain_unit": "1",
+                                       "stress_unit": "kPa", "label": "apple"}}}
+    apple = apple_stress_kPa(config, ["apple"], tmp_path)
+    assert apple == {"apple": pytest.approx([50.0, 100.0])}
+    base = {"numerics": "pressure coupling, h0/dx 1.2", "plate [m/s]": 1.0, "X/X0": 1.0}
+    rows = [dict(base, cells=1, sides="free", **{"compression L_p": 1e-12, "x single cell at 0.05": np.nan}),
+            dict(base, cells=8, sides="free", **{"compression L_p": 1e-12, "x single cell at 0.05": 2.0}),
+            dict(base, cells=16, sides="confined", **{"compression L_p": 1e-12, "x single cell at 0.05": 4.0,
+                 "x single cell at 0.10": 5.0, "modulus x single cell": 6.0, "stress at 0.05 [kPa]": 500.0,
+                 "stress at 0.10 [kPa]": 2000.0}),
+            dict(base, cells=16, sides="unconfined", **{"compression L_p": 1e-6, "x single cell at 0.05": 0.5,
+                 "x single cell at 0.10": 2.0, "modulus x single cell": 0.25, "stress at 0.05 [kPa]": 100.0,
+                 "stress at 0.10 [kPa]": 300.0}),
+            dict(base, cells=16, sides="confined", **{"X/X0": 0.5, "compression L_p": 1e-6,
+                 "x single cell at 0.05": 0.8, "x single cell at 0.10": 0.9, "modulus x single cell": np.nan,
+                 "stress at 0.05 [kPa]": 10.0, "stress at 0.10 [kPa]": 20.0}),
+            # a slab at a plate speed no single cell ran at: no ratio, not compared
+            dict(base, cells=16, sides="confined", **{"plate [m/s]": 4.0, "compression L_p": 1e-12,
+                 "x single cell at 0.05": np.nan})]
+    compared = conjecture_table(pd.DataFrame(rows), apple)
+    assert list(compared["sides"]) == ["confined", "unconfined", "confined"]
+    assert list(compared["drainage"]) == ["closed", "drained", "drained"]
+    assert list(compared["x apple at 0.05"]) == ["10.0-10.0", "2.0-2.0", "-"]  # fresh cells only
+    assert list(compared["x apple at 0.10"]) == ["20.0-20.0", "3.0-3.0", "-"]
+    answer = conjecture_answer(compared)
+    assert "Of 3 periodic slabs" in answer
+    assert "at nominal strain 0.05 2 of 3 carry less stress than their cell (0.50-4.00 times its stress)" in answer
+    assert "at nominal strain 0.10 1 of 3 carry less stress than their cell (0.90-5.00 times its stress)" in answer
+    assert "over the interior strain 1 of 2 have a lower modulus (0.25-6.00 times the cell's)" in answer
+    assert "not answered" in conjecture_answer(conjecture_table(pd.DataFrame(rows[:2]), apple))
