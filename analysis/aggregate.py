@@ -211,6 +211,8 @@ def tables(runs):
         ts = with_compression_series(timeseries(path))
         params = {"case": case.name, "dried": case.dried, "studies": " ".join(case.studies), **case.values,
                   **flatten(resolved_case(path))}
-        series.append(ts.assign(**{k: v for k, v in params.items()}))
+        # The case's parameters as columns, joined at once (one column at a time fragments the frame).
+        series.append(pd.concat([ts, pd.DataFrame({k: [v] * len(ts) for k, v in params.items()}, index=ts.index)],
+                                axis=1))
         summary.append({**params, **drying_summary(path), **summarise(ts)})
     return pd.concat(series, ignore_index=True), pd.DataFrame(summary)
