@@ -181,7 +181,10 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
                  "and compressed beside the single cell (docs/model.md §10). They are a target of their own: "
                  "<code>snakemake --cores 2 tissue</code> writes <a href='tissue.html'>tissue.html</a> beside this "
                  "page (the link works once that target has run), with the tissues' stress against the single "
-                 "cell's, their shrinkage against reference lines, and their bonds.</p>")
+                 "cell's, their shrinkage against reference lines, and their bonds. The same target runs a slab "
+                 "of cells periodic in x and y, with a strain gauge inside it, and answers the paper's conjecture "
+                 "that a tissue is less stiff than one cell from its numbers; what it found is under 'The tissue "
+                 "study' in the model closures below.</p>")
     parts.append("<h2>Model closures</h2>")
     parts.append(markdown.markdown((root / "docs" / "model-closures.md").read_text(), extensions=["tables"]))
     write_page(path, "cellsim reproduction report", parts)
