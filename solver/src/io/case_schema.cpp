@@ -76,9 +76,10 @@ std::vector<ParamSpec> build_specs() {
              "the sides of the tissue: free (a cluster of cells_x x cells_y x cells_z), or a slab periodic in x and y "
              "(cells_x x cells_y cells to a period) whose period follows zero lateral stress in drying "
              "(compression.lateral says what it does under the plates)", "model.md §10b"),
-      real("tissue.period_viscosity_Pa_s", "Pa s", 1.0, &P::period_viscosity_Pa_s, 1, 0, false, 1e6, true,
+      real("tissue.period_viscosity_Pa_s", "Pa s", 1.0, &P::period_viscosity_Pa_s, 5, 0, false, 1e6, true,
            "a periodic slab's period strains at -(its lateral stress) / this while it follows zero lateral stress "
-           "(1 Pa s: 100 kPa strains it 0.1 per us; relaxation time ~1 us for a slab of modulus ~1 MPa)",
+           "(5 Pa s: 100 kPa strains it 0.02 per us; the explicit step is stable while this exceeds half the "
+           "cells' lateral stiffness times dt, ~0.85 Pa s for a fresh slab at dt 1 ns and more as it dries)",
            "model.md §10b"),
       real("tissue.centre_distance_over_diameter", "1", 1.0, &P::centre_distance_over_diameter, 0.85, 0.6, true, 2,
            true, "distance between neighbouring cells' centres / D0; below 1 the cells press flat faces on each "
