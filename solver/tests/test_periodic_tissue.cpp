@@ -329,3 +329,41 @@ TEST(PeriodicTissue, APeriodThatWouldJumpStopsTheRunNamingTheKey) {
     EXPECT_NE(std::string(e.what()).find("tissue.period_viscosity_Pa_s"), std::string::npos) << e.what();
   }
 }
+
+// The period's explicit step (model.md §10b) moves the cells whole, so the stress answers it with the
+// stiffness K of the bonds between them: the step rings with factor 1 - K dt / eta_p. For the small
+// test cell's 2 x 2 slab K dt is ~0.04 Pa s: at eta_p = 0.02 the lateral stress changes sign every step
+// and grows until the period would jump (the run stops, naming the key); at 0.05 it does not ring.
+TEST(PeriodicTissue, ThePeriodsStepRingsAndGrowsBelowHalfTheBondStiffnessTimesDt) {
+  const auto lateral_stress = [](double eta_Pa_s, bool& stopped) {
+    Params p = slab_case(2, 2, 1, {{"tissue", {{"period_viscosity_Pa_s", eta_Pa_s}}},
+                                   {"compression", {{"lateral", "unconfined"}}}});
+    Simulation sim(p, stretched(build_tissue(p), 1.0001));
+    std::vector<double> stress;
+    stopped = false;
+    try {
+      for (int i = 0; i < 30; ++i) {
+        sim.step();
+        stress.push_back(sim.state().lateral_stress_x_Pa);
+      }
+    } catch (const NumericalFailure& e) {
+      EXPECT_NE(std::string(e.what()).find("tissue.period_viscosity_Pa_s"), std::string::npos) << e.what();
+      stopped = true;
+    }
+    return stress;
+  };
+  const auto sign_changes = [](const std::vector<double>& x) {
+    int n = 0;
+    for (std::size_t i = 1; i < x.size(); ++i) n += (x[i] > 0) != (x[i - 1] > 0);
+    return n;
+  };
+  bool stopped = false;
+  const std::vector<double> ringing = lateral_stress(0.02, stopped);
+  EXPECT_TRUE(stopped);
+  ASSERT_GE(ringing.size(), 3u);
+  EXPECT_EQ(sign_changes(ringing), static_cast<int>(ringing.size()) - 1);  // every step
+  EXPECT_GT(std::abs(ringing.back()), std::abs(ringing.front()));          // growing
+  const std::vector<double> damped = lateral_stress(0.05, stopped);
+  EXPECT_FALSE(stopped);
+  EXPECT_LE(sign_changes(damped), 1);
+}
