@@ -366,7 +366,8 @@ def test_slab_cases_are_periodic_and_confined_and_unconfined_share_one_drying(co
     assert {c.case["compression"]["plate_speed_m_s"] for c in slabs} == {1}  # the paper's and the cell's
     assert len({c.dried for c in slabs}) == 3  # one drying per dryness serves both sides and both L_p
     deep = [c for c in cases.values() if "slab_deep" in c.studies]
-    assert len(deep) == 1 and deep[0].dried in {c.dried for c in slabs} and deep[0].case["compression"]["end_strain"] == 0.25
+    assert len(deep) == 1 and deep[0].dried in {c.dried for c in slabs}
+    assert deep[0].case["compression"]["end_strain"] == 0.25 and deep[0].case["compression"]["Lp_m_per_s_Pa"] == 1e-6
 
 
 def test_a_figure_may_draw_several_studies_of_one_target_only(config):
