@@ -157,18 +157,21 @@ def conjecture_answer(compared):
     if compared.empty:
         return ("No periodic slab has run beside a single cell of the same numerics, dryness, plate speed "
                 "and drainage yet, so the conjecture is not answered here.")
+    def span(ratio):
+        return f"{ratio.min():.2f}" if ratio.min() == ratio.max() else f"{ratio.min():.2f}-{ratio.max():.2f}"
     parts = []
     for e in STRAINS:
         ratio = compared[f"x single cell at {e}"].dropna()
         if len(ratio):
             parts.append(f"at nominal strain {e} {int((ratio < 1).sum())} of {len(ratio)} carry less stress than "
-                         f"their cell ({ratio.min():.2f}-{ratio.max():.2f} times its stress)")
+                         f"their cell ({span(ratio)} times its stress)")
     modulus = compared["modulus (gauge) x single cell"].dropna()
     if len(modulus):
         parts.append(f"over the interior strain {int((modulus < 1).sum())} of {len(modulus)} have a lower "
-                     f"modulus ({modulus.min():.2f}-{modulus.max():.2f} times the cell's)")
-    return (f"Is a tissue less stiff than one cell? Of {len(compared)} periodic slabs beside a single cell of the "
-            "same numerics, dryness, plate speed and drainage, " + "; ".join(parts) + ".")
+                     f"modulus ({span(modulus)} times the cell's)")
+    slabs = f"{len(compared)} periodic slab{'s' if len(compared) > 1 else ''}"
+    return (f"Is a tissue less stiff than one cell? Of {slabs} beside a single cell of the same numerics, "
+            "dryness, plate speed and drainage, " + "; ".join(parts) + ".")
 
 
 def write_page(path, config, frame, figure_files, target="tissue"):
