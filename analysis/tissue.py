@@ -9,13 +9,11 @@ import numpy as np
 import pandas as pd
 
 from analysis import matrix, report
+from analysis.bounds import REAL_LP  # a closed cell's compression L_p; any other drains it
 from analysis.references import load as load_reference
 from analysis.results import open_result
 
 STRAINS = ("0.05", "0.10")
-# A compression L_p above this lets a cell's water out within the compression (docs/model-closures.md,
-# the drained bound: 1e-6 drained, 1e-12 closed).
-DRAINED_LP = 1e-9
 
 
 def broken_bonds_by_face(path):
@@ -65,7 +63,7 @@ def single_cell_of(rows, row):
 def table(config, summary, series, runs, target="tissue"):
     """One row per case of the target's studies: numerics, cells, sides, drainage, dryness, shrinkage,
     porosity, stresses at nominal strains, the gauge, the apparent moduli (and their ratio to the
-    single cell's of the same numerics, dryness and drainage), bonds."""
+    single cell's of the same numerics, dryness, plate speed and drainage), bonds."""
     studies = [s for s in config["studies"] if matrix.target_of(config, s) == target]
     rows = summary[summary["studies"].str.split().apply(lambda s: bool(set(studies) & set(s)))].copy()
     out = []
@@ -139,7 +137,7 @@ def conjecture_table(frame, apple_kPa):
     for _, r in slabs.iterrows():
         fresh = np.isclose(r["X/X0"], 1.0)
         line = {"numerics": r["numerics"], "X/X0": r["X/X0"], "sides": r["sides"], "plate [m/s]": r["plate [m/s]"],
-                "drainage": "drained" if r["compression L_p"] > DRAINED_LP else "closed"}
+                "drainage": "closed" if np.isclose(r["compression L_p"], REAL_LP, rtol=1e-9, atol=0) else "drained"}
         for e in STRAINS:
             line[f"x single cell at {e}"] = r[f"x single cell at {e}"]
         line["modulus (gauge) x single cell"] = r["modulus x single cell"]
@@ -189,9 +187,9 @@ def write_page(path, config, frame, figure_files, target="tissue"):
              "the fresh slab at 4 m/s too), closed and drained (compression L_p 1e-6). Stress is the top-plate force over the footprint at the start of "
              "compression (the outline of all walls seen from above; a slab's period), for every tissue and the "
              "single cell alike; 'x single cell' is a tissue's stress or modulus over the single cell's of the same "
-             "numerics, dryness and drainage. The gauge is the interior cells' strain (model.md §10c). The "
-             "tissue's volume is the convex hull of its walls, its porosity the part of that hull outside every "
-             "cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
+             "numerics, dryness, plate speed and drainage. The gauge is the interior cells' strain (model.md "
+             "§10c). The tissue's volume is the convex hull of its walls, its porosity the part of that hull "
+             "outside every cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
     parts.append("<h2>Tissues against the single cell</h2>")
     parts.append(report.frame_table(frame.drop(columns=["case"])))
     moduli = modulus_table(frame)
