@@ -187,8 +187,8 @@ def write_page(path, config, frame, figure_files, target="tissue"):
              "the fresh slab at 4 m/s too), closed and drained (compression L_p 1e-6). Stress is the top-plate force over the footprint at the start of "
              "compression (the outline of all walls seen from above; a slab's period), for every tissue and the "
              "single cell alike; 'x single cell' is a tissue's stress or modulus over the single cell's of the same "
-             "numerics, dryness, plate speed and drainage. The gauge is the interior cells' strain (model.md "
-             "§10c). The tissue's volume is the convex hull of its walls, its porosity the part of that hull "
+             "numerics, dryness, plate speed and drainage. The gauge is the interior cells' strain "
+             "(model.md §10c). The tissue's volume is the convex hull of its walls, its porosity the part of that hull "
              "outside every cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
     parts.append("<h2>Tissues against the single cell</h2>")
     parts.append(report.frame_table(frame.drop(columns=["case"])))
