@@ -116,6 +116,24 @@ TEST(PeriodicTissue, ACellMovedByAPeriodFeelsAndExertsTheSameForces) {
   EXPECT_NO_THROW(across.check_containment());
 }
 
+// A state saved from a slab whose period has shrunk (a dried slab, continued with --from) keeps that
+// period in the list of wall pairs between cells too, not the period the case builds: restored into a
+// simulation of the slab as built, the squeezed slab meets its walls across the period exactly as the
+// simulation that squeezed it does. (Before, the list kept the built period: the dried X/X0 = 0.1 slab,
+// 171 um against 255 um, had no contact across it and let a wall into its neighbour.)
+TEST(PeriodicTissue, ARestoredStateKeepsItsPeriodForTheContactsAcrossIt) {
+  Params p = slab_case(2, 2, 1);
+  const Tissue built = build_tissue(p);
+  const Simulation squeezed(p, stretched(built, 0.97));
+  Simulation restored(p, built);
+  restored.restore(squeezed.state());
+  ASSERT_LT(squeezed.state().lateral_stress_x_Pa, -1e3);  // Pa: the walls touch across the period
+  EXPECT_EQ(restored.neighbours().wall_wall().pairs, squeezed.neighbours().wall_wall().pairs);
+  EXPECT_EQ(restored.state().lateral_stress_x_Pa, squeezed.state().lateral_stress_x_Pa);
+  EXPECT_EQ(restored.state().lateral_stress_y_Pa, squeezed.state().lateral_stress_y_Pa);
+  EXPECT_LT(largest(restored.wall_force() - squeezed.wall_force()), 1e-12 * largest(squeezed.wall_force()));
+}
+
 // Stepped, the two stored images move alike: after 200 steps (the cells as built are not at rest) each
 // particle of the moved cell is where the other's is, a period away (to round-off), and no mass or
 // particle was lost.

@@ -718,6 +718,7 @@ void Simulation::restore(const State& saved) {
   if (s_.bond_plastic_elongation_m.size() != mesh_.bonds.size())
     throw InputError("saved state has " + std::to_string(saved.bond_plastic_elongation_m.size()) +
                      " wall bonds; the case builds " + std::to_string(mesh_.bonds.size()));
+  neighbours_.set_period(s_.box);  // the saved period (a dried slab's has shrunk), not the one built
   neighbours_.invalidate();
   compute_rates();
 }
