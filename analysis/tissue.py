@@ -161,11 +161,11 @@ def conjecture_answer(compared):
     for e in STRAINS:
         ratio = compared[f"x single cell at {e}"].dropna()
         if len(ratio):
-            parts.append(f"at nominal strain {e} {int((ratio < 1).sum())} of {len(ratio)} carry less stress than "
+            parts.append(f"at nominal strain {e}, {int((ratio < 1).sum())} of {len(ratio)} carry less stress than "
                          f"their cell ({span(ratio)} times its stress)")
     modulus = compared["modulus (gauge) x single cell"].dropna()
     if len(modulus):
-        parts.append(f"over the interior strain {int((modulus < 1).sum())} of {len(modulus)} have a lower "
+        parts.append(f"over the interior strain, {int((modulus < 1).sum())} of {len(modulus)} have a lower "
                      f"modulus ({span(modulus)} times the cell's)")
     slabs = f"{len(compared)} periodic slab{'s' if len(compared) > 1 else ''}"
     return (f"Is a tissue less stiff than one cell? Of {slabs} beside a single cell of the same numerics, "

@@ -509,9 +509,9 @@ def test_conjecture_is_answered_from_the_slabs_beside_their_single_cell(tmp_path
     assert list(compared["x apple at 0.10"]) == ["20.0-20.0", "3.0-3.0", "-"]
     answer = conjecture_answer(compared)
     assert "Of 3 periodic slabs" in answer
-    assert "at nominal strain 0.05 2 of 3 carry less stress than their cell (0.50-4.00 times its stress)" in answer
-    assert "at nominal strain 0.10 1 of 3 carry less stress than their cell (0.90-5.00 times its stress)" in answer
-    assert "over the interior strain 1 of 2 have a lower modulus (0.25-6.00 times the cell's)" in answer
+    assert "at nominal strain 0.05, 2 of 3 carry less stress than their cell (0.50-4.00 times its stress)" in answer
+    assert "at nominal strain 0.10, 1 of 3 carry less stress than their cell (0.90-5.00 times its stress)" in answer
+    assert "over the interior strain, 1 of 2 have a lower modulus (0.25-6.00 times the cell's)" in answer
     assert "not answered" in conjecture_answer(conjecture_table(pd.DataFrame(rows[:2]), apple))
     one = conjecture_answer(conjecture_table(pd.DataFrame(rows[:3]), apple))
     assert "Of 1 periodic slab beside" in one and "(4.00 times its stress)" in one
