@@ -12,7 +12,7 @@ from analysis.matrix import figure_cases, figure_studies
 
 
 STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
-         "table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
+         ".wide{overflow-x:auto}table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
          "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
          ".disagree td.verdict{color:#b00}.not-run td.verdict,.not-reached td.verdict{color:grey}"
          ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
@@ -45,11 +45,12 @@ def cell_text(value):
 
 
 def frame_table(frame):
-    """A pandas frame as an HTML table, headings from its columns."""
+    """A pandas frame as an HTML table, headings from its columns; a table wider than the page scrolls in
+    its own box, not the page."""
     head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
     body = "".join("<tr>" + "".join(f"<td>{cell_text(v)}</td>" for v in row) + "</tr>"
                    for row in frame.itertuples(index=False))
-    return f"<table><tr>{head}</tr>{body}</table>"
+    return f"<div class='wide'><table><tr>{head}</tr>{body}</table></div>"
 
 
 def caption(config, fig, cases):
