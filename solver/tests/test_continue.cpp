@@ -159,6 +159,33 @@ TEST(Continue, ATissueCarriesItsLamellaDamageAcrossTheDriedState) {
   EXPECT_GT(*std::max_element(peak.begin(), peak.end()), 51e-9 / 2);  // drying opened some bond toward its peak
 }
 
+// A periodic slab (2 x 2 cells to the period, one layer) continued into compression from its dried
+// state: the period shrank as it dried, and the continued run must list its walls' contacts across
+// that period, not the one the case builds (model.md §10b), to compress bit for bit as one run does.
+// 4000 compression steps: in 1500, no wall pair across the period came within the gap, and the run
+// matched even with the built period in the lists.
+TEST(Continue, APeriodicSlabCarriesItsShrunkenPeriodAcrossTheDriedState) {
+  ScratchDir dir("continue-slab");
+  const char* slab = R"({
+    "cell": {"n_wall": 642, "n_fluid": 700},
+    "tissue": {"cells_x": 2, "cells_y": 2, "lateral": "periodic"},
+    "coupling": {"repulsion_f0_N_m": 1.5e-11},
+    "drying": {"dryness": 0.5, "steps": 6000, "ramp_time_us": 4, "Lp_m_per_s_Pa": 2.5e-5},
+    "compression": {"steps": 4000, "plate_speed_m_s": 10},
+    "output": {"record_every": 50, "snapshot_every": 0}
+  })";
+  const auto continued = expect_continued_run_equals_one_run(
+      dir, slab,
+      {"timeseries/time_s", "timeseries/plate_force_top_N", "timeseries/lateral_stress_Pa",
+       "timeseries/period_x_m", "state/wall_positions", "state/fluid_positions"});
+  if (continued.empty()) return;
+  const auto period = dataset(dir.file("dried.h5"), "timeseries/period_x_m");
+  ASSERT_FALSE(period.empty());
+  EXPECT_LT(period.back(), 0.95 * period.front());  // it shrank by far more than the lists' skin
+  const auto force = dataset(continued, "timeseries/plate_force_top_N");
+  EXPECT_GT(force.back(), 0.0);  // the plates pressed the slab
+}
+
 TEST(Continue, RefusesAStateDriedWithOtherParameters) {
   ScratchDir dir("continue-mismatch");
   const auto c = dir.write("case.json", kSmallCase);
