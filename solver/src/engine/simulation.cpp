@@ -232,7 +232,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
                                 ? p.viscosity_Pa_s
                                 : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
   if (cells_.count() > 1)
-    neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m, tissue.box);
+    neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
@@ -339,7 +339,8 @@ void Simulation::update_geometry() {
 }
 
 void Simulation::update_neighbours() {
-  neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, lj_.cutoff_m, threads_, moved_since_lists_m_);
+  neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, lj_.cutoff_m, threads_, moved_since_lists_m_,
+                     s_.box);  // the period of the moment: a dried slab's has shrunk from the one built
   moved_since_lists_m_ = 0;
 }
 
@@ -423,7 +424,7 @@ void Simulation::cell_contact_terms() {
 }
 
 // A periodic slab's period follows zero lateral stress in drying, and in compression if unconfined
-// (periodic_slab.hpp); the lists learn the new period and how far the move can have taken a pair.
+// (periodic_slab.hpp); the lists learn how far the move can have taken a pair (and read the period at their next build).
 void Simulation::follow_lateral_stress(double dt) {
   if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.compression_lateral != kLateralUnconfined)) return;
   try {
@@ -431,7 +432,6 @@ void Simulation::follow_lateral_stress(double dt) {
   } catch (const NumericalFailure& e) {
     throw NumericalFailure(where() + ": " + e.what());
   }
-  neighbours_.set_period(s_.box);
 }
 
 // The pressure coupling's backstop range follows h (Eq 6) as the fluid spacing does; its pressure is K.
@@ -718,7 +718,6 @@ void Simulation::restore(const State& saved) {
   if (s_.bond_plastic_elongation_m.size() != mesh_.bonds.size())
     throw InputError("saved state has " + std::to_string(saved.bond_plastic_elongation_m.size()) +
                      " wall bonds; the case builds " + std::to_string(mesh_.bonds.size()));
-  neighbours_.set_period(s_.box);  // the saved period (a dried slab's has shrunk), not the one built
   neighbours_.invalidate();
   compute_rates();
 }

@@ -201,17 +201,15 @@ void join_parts(const std::vector<PairList>& parts, int threads, int which, Pair
 
 }  // namespace
 
-void NeighbourLists::set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m,
-                               const PeriodicBox& box) {
+void NeighbourLists::set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m) {
   cell_of_fluid_ = std::move(cell_of_fluid);
   cell_of_wall_ = std::move(cell_of_wall);
   wall_wall_cutoff_ = wall_wall_cutoff_m;
-  box_ = box;
   stale_ = true;
 }
 
 bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
-                            double wall_fluid_cutoff, int threads, double moved_at_most_m) {
+                            double wall_fluid_cutoff, int threads, double moved_at_most_m, const PeriodicBox& box) {
   fluid_cutoff_ = fluid_cutoff;
   wall_fluid_cutoff_ = wall_fluid_cutoff;
   if (!stale_) {
@@ -231,11 +229,12 @@ bool NeighbourLists::update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix
                             max_displacement(wall_x, wall_at_build_, threads));
     if (lists_hold(moved_bound_)) return false;
   }
-  build(fluid_x, wall_x, threads);
+  build(fluid_x, wall_x, threads, box);
   return true;
 }
 
-void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads) {
+void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads,
+                           const PeriodicBox& box) {
   list_fluid_cutoff_ = fluid_cutoff_ + skin_;
   list_wall_cutoff_ = wall_fluid_cutoff_ + skin_;
   fluid_at_build_ = fluid_x;
@@ -262,7 +261,7 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   fluid_fluid_.build = fluid_wall_.build = wall_wall_.build = ++builds_in_process;
   if (!cell_of_wall_.empty()) {
     const double ww = wall_wall_cutoff_ + skin_;
-    list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww, box_), ww * ww, cell_of_wall_.data(), box_, wall_wall_);
+    list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww, box), ww * ww, cell_of_wall_.data(), box, wall_wall_);
   }
   if (threads <= 1 || n < 2 * threads) {
     rows(0, n, fluid_fluid_, fluid_wall_);

@@ -33,20 +33,18 @@ class NeighbourLists {
   // (a step's drift: dt max |v|), else INFINITY. While these bounds, added up since the last look at
   // the positions, leave the skin unused, no pass over the positions is needed; otherwise the update
   // measures the largest displacement itself. Either way it rebuilds exactly when it did without them.
+  // box: a periodic tissue's period of the moment (the state's), which a build lists the wall pairs
+  // in; when it changes, the caller counts the change in moved_at_most_m.
   bool update(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, double fluid_cutoff,
-              double wall_fluid_cutoff, int threads = 1, double moved_at_most_m = INFINITY);
+              double wall_fluid_cutoff, int threads = 1, double moved_at_most_m = INFINITY,
+              const PeriodicBox& box = {});
 
   void invalidate() { stale_ = true; }  // the next update rebuilds
-  // A periodic tissue's period changed: the next build uses it. Until then the caller counts the change
-  // in the moves it reports to update().
-  void set_period(const PeriodicBox& box) { box_ = box; }
-
   // A tissue (model.md §10): fluid pairs only within a cell, fluid-wall pairs only with the cell's own
   // wall, and a third list of wall pairs of different cells within wall_wall_cutoff_m (of their nearest
   // images, in a periodic tissue: model.md §10b). Not called for one cell: then nothing is filtered and the
   // wall-wall list stays empty.
-  void set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m,
-                 const PeriodicBox& box = {});
+  void set_cells(std::vector<int> cell_of_fluid, std::vector<int> cell_of_wall, double wall_wall_cutoff_m);
 
   const PairList& fluid_fluid() const { return fluid_fluid_; }  // half list (j > i), rows padded
   const PairList& fluid_wall() const { return fluid_wall_; }    // every wall particle k near fluid i
@@ -55,7 +53,7 @@ class NeighbourLists {
   long displacement_checks() const { return displacement_checks_; }  // passes over the positions
 
  private:
-  void build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads);
+  void build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, int threads, const PeriodicBox& box);
 
   double skin_;
   double list_fluid_cutoff_ = 0, list_wall_cutoff_ = 0;  // cut-off + skin at the last build
@@ -64,7 +62,6 @@ class NeighbourLists {
   PairList fluid_fluid_, fluid_wall_, wall_wall_;
   std::vector<int> cell_of_fluid_, cell_of_wall_;  // empty: one cell
   double wall_wall_cutoff_ = 0;
-  PeriodicBox box_;  // of the wall-wall list
   std::vector<PairList> parts_;  // each thread's rows of both lists, while building with threads
   long builds_ = 0, displacement_checks_ = 0;
   double moved_bound_ = 0;  // no particle has moved farther since the build (valid unless stale_)
