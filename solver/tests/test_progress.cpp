@@ -2,8 +2,10 @@
 // stay right when a stage ends early or a run continues with --from.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <regex>
 #include <string>
+#include <thread>
 
 #include "cli/progress.hpp"
 #include "cli_helpers.hpp"
@@ -19,6 +21,33 @@ TEST(Progress, AStageEndingEarlyGivesBackItsStepsAndTheCountReachesTheTotal) {
   EXPECT_EQ(p.done(), p.planned());
   EXPECT_NE(p.line(5e-6, "compression").find("step 500/500 (100%)"), std::string::npos);
   EXPECT_NE(p.line(5e-6, "compression").find("ETA 0.0 s"), std::string::npos);
+}
+
+// The ETA of a number in a line: "... ETA 12.3 s".
+double eta_of(const std::string& line) { return std::stod(line.substr(line.rfind("ETA ") + 4)); }
+
+// A compression aimed at strain 0.12 is half-way after 100 of its 10 000 capped steps: the line says
+// the strain, and the ETA is the time to the strain (about the 50 ms spent), not to the cap (99 times it).
+TEST(Progress, AStageAimedAtAStrainSaysItAndTimesTheRestByIt) {
+  const auto run = [](bool aimed) {
+    Progress p(10000, 1e9, true);
+    if (aimed) p.aim("strain", 0.12);
+    for (int n = 0; n <= 100; ++n) {
+      p.step(1e-6, "compression", 0.0006 * n);
+      if (n % 20 == 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return p.line(1e-4, "compression");
+  };
+  const std::string aimed = run(true), capped = run(false);
+  EXPECT_NE(aimed.find("(1%), strain 0.0600 of 0.12, t = 100.00 us"), std::string::npos) << aimed;
+  EXPECT_EQ(capped.find("strain"), std::string::npos) << capped;
+  EXPECT_LT(eta_of(aimed), 0.5) << aimed;   // about 0.05 s
+  EXPECT_GT(eta_of(capped), 2.0) << capped;  // about 99 x 0.05 s
+  Progress done(10000, 1e9, true);
+  done.aim("strain", 0.12);
+  done.step(0, "compression", 0.0);
+  done.step(0, "compression", 0.13);  // past the goal: nothing left
+  EXPECT_EQ(eta_of(done.line(0, "compression")), 0.0) << done.line(0, "compression");
 }
 
 TEST(Progress, AContinuedRunCountsItsOwnStepsNeverAboveAHundredPercent) {

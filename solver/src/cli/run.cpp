@@ -22,7 +22,8 @@ namespace {
 // asked after every step, with the record taken at that step (nullptr if none). A record and a
 // snapshot are taken at the stage's last step whatever the intervals.
 void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(const Record*)>& done,
-               ResultFile& out, std::vector<Record>& records, Progress& progress, const char* name) {
+               ResultFile& out, std::vector<Record>& records, Progress& progress, const char* name,
+               const std::function<double()>& reached = [] { return 0.0; }) {
   const Params& p = sim.params();
   const auto take_record = [&] {
     sim.check_containment();
@@ -35,7 +36,7 @@ void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(con
     const bool last = n == steps || done(recorded);
     if (last && !recorded) take_record();
     if ((p.snapshot_every > 0 && n % p.snapshot_every == 0) || last) out.write_snapshot(sim.state(), sim.eos());
-    progress.step(sim.state().time_s, name);
+    progress.step(sim.state().time_s, name, reached());
     if (last) {
       progress.unplan(steps - n);
       break;
@@ -149,7 +150,9 @@ void run_case(Params p, const RunOptions& options) {
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
     if (compression_steps > 0) {
       sim.start_compression();
-      run_stage(sim, compression_steps, strain_reached, out, records, progress, "compression");
+      if (p.end_strain && !p.unload_at_strain) progress.aim("strain", *p.end_strain);
+      run_stage(sim, compression_steps, strain_reached, out, records, progress, "compression",
+                [&] { return sim.nominal_strain(); });
     }
     progress.finish(sim.state().time_s);
   } catch (const NumericalFailure& e) {
