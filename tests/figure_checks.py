@@ -112,6 +112,13 @@ def check_shapes(config, fig, figure, out):
         dots = [c for c in ax.collections if isinstance(c, PathCollection)]
         assert dots and len(dots[0].get_offsets()) > 0, f"{fig} panel {k}: no fluid particles"
         assert "t = " in ax.get_title(), f"{fig} panel {k}: untitled"
+        segments = np.concatenate([np.concatenate(c.get_segments()) for c in walls])
+        (x0, x1), (z0, z1) = ax.get_xlim(), ax.get_ylim()
+        assert (segments[:, 0] >= x0).all() and (segments[:, 0] <= x1).all() and (segments[:, 1] >= z0).all() \
+            and (segments[:, 1] <= z1).all(), f"{fig} panel {k}: the wall runs out of the panel"
+    # One scale for all: a shape compares with its neighbour's only at the same scale.
+    scales = {(ax.get_xlim(), ax.get_ylim()) for ax in panels}
+    assert len(scales) == 1, f"{fig}: panels at {len(scales)} different scales: {sorted(scales)}"
 
 
 def check_model(config, fig, figure, out):

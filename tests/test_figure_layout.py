@@ -68,3 +68,24 @@ def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path, whic
         plt.close(figure)
         checked += 1
     assert checked == len(config["figures"]) >= 18
+
+
+def test_shape_panels_share_one_scale(root, small_runs):
+    """A fresh and a dried cell side by side (fig02): drawn at one scale, the dried cell looks smaller, as
+    it is, and every wall stays inside its panel."""
+    config = configs(root)["default"]
+    cases = matrix.expand(config)
+    names = matrix.figure_cases(config, "fig02", cases)
+    runs = {n: small_runs[1.0 if cases[n].values["dryness"] == 1.0 else 0.5] for n in names}
+    figure = shapes.draw(config, "fig02", runs, {n: cases[n] for n in names})
+    panels = data_panels(figure)
+    assert len({(ax.get_xlim(), ax.get_ylim()) for ax in panels}) == 1
+    reach = panels[0].get_xlim()[1]
+    widths = []
+    for ax in panels:
+        wall = np.concatenate([np.concatenate(c.get_segments()) for c in ax.collections if hasattr(c, "get_segments")])
+        assert np.abs(wall).max() <= reach
+        widths.append(np.ptp(wall[:, 0]))
+    assert max(widths) / min(widths) > 1.05  # the dried cell is narrower at the end of drying
+    import matplotlib.pyplot as plt
+    plt.close(figure)

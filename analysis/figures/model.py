@@ -36,7 +36,8 @@ def draw(config, fig, runs, cases):
     ax.set_title(f"(a) {len(snap['wall'])} wall particles ({len(tri)} triangles), {len(snap['fluid'])} fluid "
                  "particles; front half cut away", fontsize=8)
     ax2 = figure.add_subplot(1, 2, 2)
-    draw_slice(ax2, snap, 2 * half * 1e-6)
+    reach = draw_slice(ax2, snap, 2 * half * 1e-6)
+    ax2.set_xlim(-reach, reach), ax2.set_ylim(-reach, reach)
     ax2.set_title("(b) mid-plane slice at the start of compression", fontsize=8)
     ax2.set_xlabel("x [um]"), ax2.set_ylabel("z [um]")
     figure.subplots_adjust(wspace=0.3)

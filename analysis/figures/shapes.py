@@ -41,6 +41,7 @@ def slice_plane_y(wall, wall_cell):
 
 
 def draw_slice(ax, snap, plate_length_m, scale=1e6):
+    """The mid-plane slice of one snapshot; returns the half-width [um] of the square that holds it."""
     wall, fluid, wall_cell = snap["wall"], snap["fluid"], snap["wall_cell"]
     centre = wall.mean(axis=0)
     centre[1] = slice_plane_y(wall, wall_cell)
@@ -67,12 +68,9 @@ def draw_slice(ax, snap, plate_length_m, scale=1e6):
     if np.isfinite(period):
         for x in (-0.5 * period, 0.5 * period):
             ax.axvline(x, color="grey", ls="--", lw=0.8)
-    # Square limits that hold the plates and the whole wall (a 200 um cell is wider than the plates).
-    reach = max(half, reach)
     ax.set_aspect("equal")
-    ax.set_xlim(-reach, reach)
-    ax.set_ylim(-reach, reach)
     ax.tick_params(labelsize=7)
+    return max(half, reach)  # the half-width of a square that holds the plates and the whole wall
 
 
 def draw(config, fig, runs, cases):
@@ -91,6 +89,7 @@ def draw(config, fig, runs, cases):
     rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
     figure, axes = grid(len(rows), len(cols), panel_w=2.7, panel_h=2.7)
     tissue = periodic = False
+    drawn = {}  # axes: the half-width its slice needs
     for i, rv in enumerate(rows):
         for j, cv in enumerate(cols):
             ax = axes[i][j]
@@ -106,7 +105,7 @@ def draw(config, fig, runs, cases):
             tissue = tissue or snap["wall_cell"].max() > 0
             periodic = periodic or np.isfinite(snap["period_x_m"])
             plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
-            draw_slice(ax, snap, plate_length)
+            drawn[ax] = draw_slice(ax, snap, plate_length)
             label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
             # Two short lines: long one-line titles ran into the neighbouring panels' titles.
             ax.set_title(f"{panel_letter(i * len(cols) + j)} " + ", ".join(label) +
@@ -115,6 +114,12 @@ def draw(config, fig, runs, cases):
                 ax.set_ylabel("z [um]", fontsize=8)
             if i == len(rows) - 1:
                 ax.set_xlabel("x [um]", fontsize=8)
+    # One scale for every panel (a 200 um cell is wider than the plates; a slab at the end of drying
+    # stands taller than compressed), so that shapes and sizes compare across panels.
+    reach = max(drawn.values(), default=1.0)
+    for ax in drawn:
+        ax.set_xlim(-reach, reach)
+        ax.set_ylim(-reach, reach)
     walls = "walls coloured by cell" if tissue else "wall green"
     period = ", the period dashed" if periodic else ""
     figure.suptitle(spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black{period})", fontsize=10)
