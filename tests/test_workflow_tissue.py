@@ -1,5 +1,5 @@
-"""The tissue target end to end on reduced cells (tests/tissue_reduced.yaml): its runs on two threads,
-its table and page (the clusters in the paper's numerics; the periodic slab, a cluster and the cell in
+"""The tissue target end to end on reduced cells (tests/tissue_reduced.yaml): its runs (one thread
+each), its table and page (the clusters in the paper's numerics; the periodic slab, a cluster and the cell in
 the pressure coupling's), its ten figures, the 3-D pages with each cell coloured, and none of the
 default target's. Slow: about ten minutes on 2 cores."""
 import pandas as pd
