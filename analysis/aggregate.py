@@ -113,7 +113,7 @@ def load_partition(compression, window=LOAD_WINDOW):
 
 ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transfer_energy_J", "closure_energy_J",
                 "drive_energy_J", "density_diffusion_energy_J", "backstop_work_J", "volume_closure_energy_J",
-                "plastic_loss_J")
+                "plastic_loss_J", "lamella_loss_J")
 
 
 def energy_account(drying, compression):

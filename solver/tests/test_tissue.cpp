@@ -1,5 +1,6 @@
 // A tissue of cells (model.md §10): its geometry, the walls between cells, and the separation of the
 // cells' fluids.
+#include <cmath>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -242,6 +243,76 @@ TEST(LamellaLaw, SoftensFromItsPeakToZeroAndDissipatesTheFractureEnergy) {
     previous = f;
   }
   EXPECT_NEAR(work, 1.0 * a_w, 1e-4 * a_w);
+}
+
+// The work put into a bond along a path that opens, closes part way and opens past delta_f equals the
+// change of its stored plus dissipated energy at every point; once separated it has dissipated G_f a_w.
+TEST(LamellaLaw, StoredPlusDissipatedEnergyIsTheWorkDoneOnTheBond) {
+  const double a_w = 34e-12, f_max = 51e-6;
+  const LamellaLaw law{1e3, f_max, lamella_break_opening_m(1.0, a_w, f_max)};
+  const double d_f = law.break_opening_m;
+  std::vector<double> path;  // openings, in small steps: 0 -> 0.6 d_f -> 0.1 d_f -> -0.05 d_f -> 1.01 d_f
+  const auto go = [&](double from, double to) {
+    for (int i = 1; i <= 100000; ++i) path.push_back(from + (to - from) * i / 100000);
+  };
+  go(0, 0.6 * d_f), go(0.6 * d_f, 0.1 * d_f), go(0.1 * d_f, -0.05 * d_f), go(-0.05 * d_f, 1.01 * d_f);
+  double peak = 0, work = 0, previous_opening = 0, previous_force = 0;
+  for (double d : path) {
+    peak = std::max(peak, d);
+    const double f = law.tension_N(d, peak);
+    work += 0.5 * (f + previous_force) * (d - previous_opening);
+    previous_opening = d, previous_force = f;
+    const double energy = law.stored_energy_J(d, peak) + law.dissipated_energy_J(peak);
+    ASSERT_NEAR(energy, work, 1e-4 * a_w) << "opening " << d << ", peak " << peak;
+  }
+  EXPECT_NEAR(law.dissipated_energy_J(peak), 1.0 * a_w, 1e-12 * a_w);  // G_f a_w
+  EXPECT_EQ(law.stored_energy_J(0.5 * d_f, peak), 0.0);
+  // Closed back to half its peak, a damaged bond has dissipated part and stores the secant's energy.
+  EXPECT_GT(law.dissipated_energy_J(0.6 * d_f), 0.0);
+  EXPECT_NEAR(law.stored_energy_J(0.3 * d_f, 0.6 * d_f), 0.5 * law.tension_N(0.3 * d_f, 0.6 * d_f) * 0.3 * d_f, 1e-25);
+  // A brittle bond keeps its spring's energy until it breaks, then has lost all of it.
+  const LamellaLaw brittle{2e3, 2.1e-3, 0.0};
+  EXPECT_NEAR(brittle.stored_energy_J(1.04e-6, 1.04e-6), 0.5 * 2e3 * 1.04e-6 * 1.04e-6, 1e-20);
+  EXPECT_EQ(brittle.dissipated_energy_J(1.04e-6), 0.0);
+  EXPECT_EQ(brittle.stored_energy_J(1.06e-6, 1.06e-6), 0.0);
+  EXPECT_NEAR(brittle.dissipated_energy_J(1.06e-6), 0.5 * 2e3 * 1.06e-6 * 1.06e-6, 1e-20);
+}
+
+// The contact and bond energies are the potentials of their forces: -dE/dx of each particle, by
+// central differences, is the force add_cell_contact_forces gives it (across the period too).
+TEST(CellContact, ItsEnergiesAreThePotentialsOfItsForces) {
+  const CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
+  Eigen::Matrix3Xd x(3, 4);
+  x << 0, 5e-6, 0, 99e-6,  // 3 sits across the 100 um period from 2: 6.4 um from it
+      0, 1e-6, 20e-6, 20e-6,  //
+      0, 0, 0, 5e-6;
+  const PeriodicBox box{100e-6, 100e-6};
+  PairList wall_wall;
+  wall_wall.offset = {0, 1, 1, 1, 1};
+  wall_wall.index = {1};
+  const std::vector<LamellaBond> bonds = {{2, 3, 6.0e-6}};  // opened 0.4 um: softening (delta_0 = 51 nm)
+  const std::vector<double> peak_before = {0.5e-6};          // damaged before: the secant branch
+  const auto energy = [&](const Eigen::Matrix3Xd& at) {
+    const CellContactEnergy e = cell_contact_energy(at, wall_wall, bonds, law, box, {1}, peak_before);
+    return e.contact_J + e.lamella_J;
+  };
+  std::vector<char> intact = {1};
+  std::vector<double> peak = peak_before;
+  Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 4);
+  add_cell_contact_forces(x, wall_wall, bonds, law, box, intact, peak, force);
+  ASSERT_EQ(peak, peak_before);  // still inside its peak: the energy is a potential there
+  const CellContactEnergy e = cell_contact_energy(x, wall_wall, bonds, law, box, intact, peak);
+  EXPECT_NEAR(e.contact_J, 0.5 * 1e3 * std::pow(6e-6 - std::hypot(5e-6, 1e-6), 2), 1e-24);
+  EXPECT_GT(e.lamella_J, 0.0);
+  EXPECT_NEAR(e.lamella_dissipated_J, law.lamella.dissipated_energy_J(0.5e-6), 1e-24);
+  const double h = 1e-10;
+  for (int k = 0; k < 4; ++k)
+    for (int a = 0; a < 3; ++a) {
+      Eigen::Matrix3Xd plus = x, minus = x;
+      plus(a, k) += h, minus(a, k) -= h;
+      EXPECT_NEAR(-(energy(plus) - energy(minus)) / (2 * h), force(a, k), 1e-6 * force.cwiseAbs().maxCoeff())
+          << "particle " << k << ", axis " << a;
+    }
 }
 
 TEST(LamellaLaw, ABondThatSoftensPullsBothWallsEquallyAndSeparatesAtItsBreakOpening) {

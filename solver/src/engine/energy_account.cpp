@@ -25,6 +25,13 @@ StoredEnergy stored_energy(const State& s, const EnergyModel& model) {
             model.lj->potential_J((f.x.col(i) - s.wall.x.col(pairs.index[static_cast<std::size_t>(q)])).squaredNorm());
   }
   e.plate_J = plate_energy_J(s.wall.x, model.plates, s.plates);
+  if (model.contact) {
+    const CellContactEnergy between = cell_contact_energy(s.wall.x, *model.wall_wall, *model.lamella, *model.contact,
+                                                          s.box, s.lamella_intact, s.lamella_peak_opening_m);
+    e.contact_J = between.contact_J;
+    e.lamella_J = between.lamella_J;
+    e.lamella_loss_J = between.lamella_dissipated_J;
+  }
   return e;
 }
 
@@ -78,7 +85,7 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
 double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
   const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
                         flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J +
-                        flows.volume_closure_J - flows.plastic_loss_J;
+                        flows.volume_closure_J - flows.plastic_loss_J - now.lamella_loss_J;
   return now.total_J() - flows.initial_J - put_in;
 }
 

@@ -11,6 +11,7 @@
 #include "geometry/neighbours.hpp"
 #include "geometry/wall_mesh.hpp"
 #include "physics/bending.hpp"
+#include "physics/cell_contact.hpp"
 #include "physics/eos.hpp"
 #include "physics/lennard_jones.hpp"
 #include "physics/plates.hpp"
@@ -26,9 +27,15 @@ struct StoredEnergy {
   double wall_bending_J = 0;      // Eq 20
   double coupling_J = 0;          // the LJ potential of Eqs 12-13, 17-19 (0 for the pressure coupling)
   double plate_J = 0;             // Eq 22's springs
+  double contact_J = 0;           // a tissue's wall contacts between cells (cell_contact.hpp)
+  double lamella_J = 0;           // its intact middle-lamella bonds (lamella_law.hpp)
   double total_J() const {
-    return kinetic_J + internal_J + wall_stiff_J + wall_contraction_J + wall_bending_J + coupling_J + plate_J;
+    return kinetic_J + internal_J + wall_stiff_J + wall_contraction_J + wall_bending_J + coupling_J + plate_J +
+           contact_J + lamella_J;
   }
+  // Not stored, but like the stored energies a function of the state (each bond's largest opening): the
+  // energy the lamella's softening and breaking has taken since the tissue was built.
+  double lamella_loss_J = 0;
 };
 
 // What the stored energy depends on besides the state. lj: null for the pressure coupling, which
@@ -42,6 +49,9 @@ struct EnergyModel {
   const PairList& fluid_wall;
   const PlateLaw& plates;
   EquationOfState eos;
+  const CellContactLaw* contact = nullptr;  // a tissue's (null for one cell), with its pairs and bonds:
+  const PairList* wall_wall = nullptr;
+  const std::vector<LamellaBond>* lamella = nullptr;
 };
 
 StoredEnergy stored_energy(const State& s, const EnergyModel& model);

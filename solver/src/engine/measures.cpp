@@ -140,7 +140,12 @@ const std::vector<Quantity>& quantities() {
       {"coupling_energy_J", "J", "potential of the LJ wall-fluid forces, zero at r_c (0 for the pressure coupling)",
        &Record::coupling_energy_J},
       {"plate_energy_J", "J", "energy of Eq 22's plate springs, k_pw overlap^2 / 2", &Record::plate_energy_J},
-      {"stored_energy_J", "J", "kinetic + internal + wall (stiff, contraction, bending) + coupling + plate energies",
+      {"contact_energy_J", "J", "a tissue's wall contacts between cells, k_c (g - r)^2 / 2 per pair closer than g",
+       &Record::contact_energy_J},
+      {"lamella_energy_J", "J", "energy its intact middle-lamella bonds store (F delta / 2 on the bond's branch)",
+       &Record::lamella_energy_J},
+      {"stored_energy_J", "J",
+       "kinetic + internal + wall (stiff, contraction, bending) + coupling + plate + contact + lamella energies",
        &Record::stored_energy_J},
       {"plate_work_J", "J", "work of the top plate on the wall since t = 0, integral of F_top x plate speed",
        &Record::plate_work_J},
@@ -163,6 +168,10 @@ const std::vector<Quantity>& quantities() {
        &Record::volume_closure_energy_J},
       {"plastic_loss_J", "J", "energy the wall's plastic flow dissipated since t = 0 (0 for an elastic wall)",
        &Record::plastic_loss_J},
+      {"lamella_loss_J", "J",
+       "energy the middle lamella's softening and breaking took since t = 0 (its bonds' largest openings; G_f a_w "
+       "for each bond separated)",
+       &Record::lamella_loss_J},
       {"wall_plastic_strain_mean", "1",
        "mean over the wall bonds of the plastic strain delta_p / l0, the slider's elongation (0 if elastic)",
        &Record::wall_plastic_strain_mean},
@@ -170,7 +179,7 @@ const std::vector<Quantity>& quantities() {
        &Record::wall_plastic_strain_max},
       {"energy_residual_J", "J",
        "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
-       "diffusion + backstop work + volume closure - plastic loss): the error of the energy account",
+       "diffusion + backstop work + volume closure - plastic loss - lamella loss): the error of the energy account",
        &Record::energy_residual_J},
   };
   return q;
@@ -207,6 +216,9 @@ void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Re
   r.wall_bending_energy_J = stored.wall_bending_J;
   r.coupling_energy_J = stored.coupling_J;
   r.plate_energy_J = stored.plate_J;
+  r.contact_energy_J = stored.contact_J;
+  r.lamella_energy_J = stored.lamella_J;
+  r.lamella_loss_J = stored.lamella_loss_J;
   r.stored_energy_J = stored.total_J();
   r.plate_work_J = flows.plate_work_J;
   r.viscous_loss_J = flows.viscous_loss_J;

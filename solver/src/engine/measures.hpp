@@ -31,9 +31,9 @@ struct Record {
   double period_x_m, period_y_m, lateral_stress_Pa;  // a periodic slab's (model.md §10b)
   // The energy account (energy_account.hpp): stored energies, the flows since t = 0, the residual.
   double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
-  double coupling_energy_J, plate_energy_J, stored_energy_J;
+  double coupling_energy_J, plate_energy_J, contact_energy_J, lamella_energy_J, stored_energy_J;
   double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
-  double density_diffusion_energy_J, backstop_work_J, volume_closure_energy_J, plastic_loss_J;
+  double density_diffusion_energy_J, backstop_work_J, volume_closure_energy_J, plastic_loss_J, lamella_loss_J;
   double wall_plastic_strain_mean, wall_plastic_strain_max;  // delta_p / l0 over the bonds (wall_plasticity.hpp)
   double energy_residual_J;
   // Each cell's (model.md §10), in cell order.

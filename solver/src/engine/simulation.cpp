@@ -255,8 +255,10 @@ void Simulation::start_energy_account() {
 }
 
 StoredEnergy Simulation::stored_energy_now() const {
+  const bool tissue = cells_.count() > 1;
   return stored_energy(s_, {mesh_, bond_law_, contraction_ramp(), bending_,
-                            p_.coupling_model == kPressure ? nullptr : &lj_, neighbours_.fluid_wall(), plate_law_, eos()});
+                            p_.coupling_model == kPressure ? nullptr : &lj_, neighbours_.fluid_wall(), plate_law_, eos(),
+                            tissue ? &contact_law_ : nullptr, &neighbours_.wall_wall(), &lamella_});
 }
 
 double Simulation::contraction_ramp() const {

@@ -71,4 +71,24 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
   return broken;
 }
 
+CellContactEnergy cell_contact_energy(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                                      const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                                      const PeriodicBox& box, const std::vector<char>& intact,
+                                      const std::vector<double>& peak_opening_m) {
+  CellContactEnergy e;
+  for (int k = 0; k < wall_wall.rows(); ++k)
+    for (std::size_t q = static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k)]);
+         q < static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k) + 1]); ++q) {
+      const double r = box.nearest_image(wall_x.col(k) - wall_x.col(wall_wall.index[q])).norm();
+      if (r < law.gap_m && r > 0) e.contact_J += 0.5 * law.contact_stiffness_N_m * (law.gap_m - r) * (law.gap_m - r);
+    }
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    e.lamella_dissipated_J += law.lamella.dissipated_energy_J(peak_opening_m[b]);
+    if (!intact[b]) continue;
+    const double r = box.nearest_image(wall_x.col(bonds[b].b) - wall_x.col(bonds[b].a)).norm();
+    e.lamella_J += law.lamella.stored_energy_J(r - bonds[b].length_m, peak_opening_m[b]);
+  }
+  return e;
+}
+
 }  // namespace cellsim

@@ -32,4 +32,16 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
                             std::vector<char>& intact, std::vector<double>& peak_opening_m,
                             Eigen::Matrix3Xd& wall_force, Eigen::Vector2d* period_virial_J = nullptr);
 
+// The energies of these forces (the energy account): the contacts' k_c (g - r)^2 / 2 over the pairs
+// closer than g, the intact bonds' stored energy and every bond's dissipated energy (lamella_law.hpp).
+struct CellContactEnergy {
+  double contact_J = 0;
+  double lamella_J = 0;
+  double lamella_dissipated_J = 0;
+};
+CellContactEnergy cell_contact_energy(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                                      const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                                      const PeriodicBox& box, const std::vector<char>& intact,
+                                      const std::vector<double>& peak_opening_m);
+
 }  // namespace cellsim

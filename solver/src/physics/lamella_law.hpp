@@ -6,6 +6,7 @@
 // instead of releasing its stretched spring at once. Damage is kept: a bond opened to delta_peak past
 // delta_0 pulls back along the secant F(delta_peak) delta / delta_peak. Closing (delta < 0) is elastic.
 // delta_f <= delta_0 (G_f = 0) is the brittle bond: it breaks when its tension exceeds F_max.
+#include <algorithm>
 
 namespace cellsim {
 
@@ -29,6 +30,25 @@ struct LamellaLaw {
     if (separated(peak_opening_m)) return 0.0;
     const double envelope = peak_force_N * (break_opening_m - peak_opening_m) / (break_opening_m - elastic_limit);
     return envelope * opening_m / peak_opening_m;
+  }
+
+  // The energy the bond stores: the work its tension gives back on closing to l0. Each branch is linear
+  // through the origin (elastic, closing, or the secant of a damaged bond), so it is F delta / 2.
+  double stored_energy_J(double opening_m, double peak_opening_m) const {
+    return separated(peak_opening_m) ? 0.0 : 0.5 * tension_N(opening_m, peak_opening_m) * opening_m;
+  }
+
+  // The energy the bond has taken for good, a function of its largest opening only: the envelope's work
+  // up to it less what the secant gives back; F_max delta_f / 2 = G_f a_w once separated. A brittle bond
+  // lets go of its whole spring, k peak^2 / 2, at the opening where it broke.
+  double dissipated_energy_J(double peak_opening_m) const {
+    const double elastic_limit = elastic_limit_m();
+    if (peak_opening_m <= elastic_limit) return 0.0;
+    if (break_opening_m <= elastic_limit) return 0.5 * stiffness_N_m * peak_opening_m * peak_opening_m;
+    const double peak = std::min(peak_opening_m, break_opening_m);
+    const double envelope = peak_force_N * (break_opening_m - peak) / (break_opening_m - elastic_limit);
+    const double work_to_peak = 0.5 * peak_force_N * elastic_limit + 0.5 * (peak - elastic_limit) * (peak_force_N + envelope);
+    return work_to_peak - 0.5 * envelope * peak;
   }
 };
 
