@@ -10,6 +10,17 @@ from snakemake.utils import min_version, validate
 
 min_version("7.21")
 
+# What --configfile gave, before config/config.yaml is merged under it: a value where config.yaml has a
+# mapping (or the reverse) would stop Snakemake's own merge with a TypeError naming no key.
+import sys as _sys
+import yaml as _yaml
+_sys.path.insert(0, workflow.basedir)
+from analysis.matrix import ConfigError as _ConfigError, check_merge as _check_merge  # noqa: E402
+try:
+    _check_merge(config, _yaml.safe_load(open(f"{workflow.basedir}/config/config.yaml")))
+except _ConfigError as error:
+    raise WorkflowError(f"config: {error}")
+
 configfile: "config/config.yaml"
 
 # workflow/profiles/slurm is a Snakemake 7 profile (--cluster); Snakemake 8+ reads its config.v8+.yaml,

@@ -3,7 +3,7 @@ metrics. Every case parameter is a column ('cell.turgor_kPa', ...), and so is ev
 import numpy as np
 import pandas as pd
 
-from analysis.results import drying_summary, flatten, resolved_case, timeseries
+from analysis.results import flatten, resolved_case, run_summary, timeseries
 
 STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
 LOAD_WINDOW = (0.05, 0.15)    # nominal strains over which the load partition is averaged
@@ -214,5 +214,5 @@ def tables(runs):
         # The case's parameters as columns, joined at once (one column at a time fragments the frame).
         series.append(pd.concat([ts, pd.DataFrame({k: [v] * len(ts) for k, v in params.items()}, index=ts.index)],
                                 axis=1))
-        summary.append({**params, **drying_summary(path), **summarise(ts)})
+        summary.append({**params, **run_summary(path), **summarise(ts)})
     return pd.concat(series, ignore_index=True), pd.DataFrame(summary)

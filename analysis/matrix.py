@@ -116,6 +116,22 @@ def target_figures(config, target=DEFAULT_TARGET):
     return [f for f, spec in config["figures"].items() if target_of(config, figure_studies(spec)[0]) == target]
 
 
+def check_merge(override, base, path=()):
+    """A --configfile is merged over config/config.yaml mapping by mapping; where one of the two has a
+    mapping and the other a value, Snakemake's own merge stops with a TypeError that names no key. Raises
+    ConfigError naming the first such key instead (found issue 51, by the config fuzzer)."""
+    for key, value in override.items():
+        if key not in base:
+            continue
+        where = ".".join(map(str, path + (key,)))
+        if isinstance(base[key], dict) != isinstance(value, dict):
+            has = "a mapping" if isinstance(base[key], dict) else f"the value {base[key]!r}"
+            raise ConfigError(f"{where} = {str(value)[:60]!r}: config/config.yaml has {has} there, and a "
+                              f"--configfile must give the same kind (a mapping is merged key by key)")
+        if isinstance(value, dict):
+            check_merge(value, base[key], path + (key,))
+
+
 def check(config, root="."):
     """Cross-references the schema cannot check; raises ConfigError naming the key."""
     axes, studies = config["axes"], config["studies"]

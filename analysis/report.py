@@ -103,19 +103,38 @@ def matrix_table(summary, axes, cell_links=None):
     return f"<table><tr>{head}</tr>{''.join(body)}</table>"
 
 
+def _warning_parts(summary, compression):
+    """Each case's warnings ('; '-joined by the solver) of the compression's cap (compression=True) or
+    of the start and the drying (False), as {case: text} of the cases that have any."""
+    out = {}
+    for _, row in summary.iterrows():
+        parts = [p for p in str(row.get("warning") or "").split("; ") if p and p.startswith("compression ") == compression]
+        if parts:
+            out[row["case"]] = "; ".join(parts)
+    return out
+
+
 def warnings_box(summary):
     """Cases whose start or drying did not end as it should (drying at its cap unsteady, a relaxation at
-    rest that did not converge): a visible box at the top, or nothing."""
+    rest that did not converge): a visible box at the top; and, as a note below it, the compressions
+    that stopped at compression.steps before the end they were asked for (their curves end short)."""
     if "warning" not in summary.columns:
         return ""
-    flagged = summary[summary["warning"].fillna("") != ""]
-    if flagged.empty:
-        return ""
-    items = "".join(f"<li><code>{html.escape(r['case'])}</code>: {html.escape(r['warning'])}</li>"
-                    for _, r in flagged.iterrows())
-    return (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady state "
-            f"as they should.</b> Their compressions start from a cell still settling; raise drying.steps or "
-            f"settle.max_iterations in config.<ul>{items}</ul></div>")
+    summary = summary.assign(warning=summary["warning"].fillna(""))
+    box = ""
+    flagged = _warning_parts(summary, compression=False)
+    if flagged:
+        items = "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in flagged.items())
+        box += (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady "
+                f"state as they should.</b> Their compressions start from a cell still settling; raise drying.steps "
+                f"or settle.max_iterations in config.<ul>{items}</ul></div>")
+    capped = _warning_parts(summary, compression=True)
+    if capped:
+        items = "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in capped.items())
+        box += (f"<details><summary>Note: {len(capped)} of {len(summary)} compressions stopped at their cap "
+                f"(compression.steps) before the end they were asked for; their curves end at the strain "
+                f"given.</summary><ul>{items}</ul></details>")
+    return box
 
 
 ENERGY_TOLERANCE = 0.1  # |energy residual| over the plate work of a compression above which it is flagged

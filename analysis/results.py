@@ -29,14 +29,16 @@ def resolved_case(path):
         return json.loads(f.attrs["case_json"])
 
 
-def drying_summary(path):
-    """How the start and the drying went: the relaxation at rest, when steady state was reached
-    (NaN if drying hit its cap), and the run's warning ('' if none)."""
+def run_summary(path):
+    """How the run went: the relaxation at rest, when steady state was reached (NaN if drying hit its
+    cap), whether the compression stopped at its cap (compression.steps) before the end it was asked
+    for, and the run's warning ('' if none)."""
     with open_result(path) as f:
         a = f.attrs
         return {"settle_iterations": int(a["settle_iterations"]), "settle_mass_ratio": float(a["settle_mass_ratio"]),
                 "settle_volume_ratio": float(a["settle_volume_ratio"]),
                 "drying_steady": bool(a["drying_steady"]), "drying_steady_time_us": float(a["drying_steady_time_s"]) * 1e6,
+                "compression_at_cap": int(a.get("compression_reached_end", -1)) == 0,
                 "warning": text(a["warning"])}
 
 

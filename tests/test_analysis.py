@@ -229,6 +229,13 @@ def test_report_warns_of_every_case_whose_drying_hit_its_cap():
     box = warnings_box(summary)
     assert "1 of 3 cases" in box and "<code>B</code>" in box and "<code>A</code>" not in box
     assert warnings_box(summary.assign(warning="")) == ""
+    # A compression stopped at its cap is a note of its own, not the drying's warning.
+    capped = "compression reached compression.steps = 25000 at nominal strain 0.148 before compression.end_strain = 0.2"
+    box = warnings_box(summary.assign(warning=["", f"drying reached drying.steps without a steady state; {capped}",
+                                               capped]))
+    drying_box, note = box.split("<details>")
+    assert "1 of 3 cases" in drying_box and "<code>C</code>" not in drying_box and "compression reached" not in drying_box
+    assert "2 of 3 compressions stopped at their cap" in note and "<code>B</code>" in note and "0.148" in note
 
 
 def test_report_warns_of_every_compression_whose_energy_account_does_not_close():
@@ -240,15 +247,16 @@ def test_report_warns_of_every_compression_whose_energy_account_does_not_close()
     assert energy_box(summary.assign(compression_energy_residual_over_work=0.0)) == ""
 
 
-def test_drying_summary_reads_a_result_files_start_and_steady_state(cellsim, tmp_path):
-    from analysis.results import drying_summary
+def test_run_summary_reads_a_result_files_start_and_steady_state(cellsim, tmp_path):
+    from analysis.results import run_summary
     out = tmp_path / "run.h5"
     (tmp_path / "case.json").write_text('{"cell": {"n_wall": 402, "n_fluid": 400}, '
                                         '"coupling": {"repulsion_f0_N_m": 1.5e-11}, '  # coarse cells: config/ci.yaml
                                         '"drying": {"steps": 300}, "compression": {"steps": 0}}')
     subprocess.run([cellsim, "run", str(tmp_path / "case.json"), "-o", str(out), "--quiet"], check=True)
-    summary = drying_summary(out)
+    summary = run_summary(out)
     assert summary["settle_iterations"] > 0
+    assert summary["compression_at_cap"] is False  # no compression ran
     assert summary["drying_steady"] is False and summary["drying_steady_time_us"] != summary["drying_steady_time_us"]
     assert summary["warning"] == "drying reached drying.steps without a steady state"  # a str, not bytes
 
@@ -515,3 +523,28 @@ def test_conjecture_is_answered_from_the_slabs_beside_their_single_cell(tmp_path
     assert "not answered" in conjecture_answer(conjecture_table(pd.DataFrame(rows[:2]), apple))
     one = conjecture_answer(conjecture_table(pd.DataFrame(rows[:3]), apple))
     assert "Of 1 periodic slab beside" in one and "(4.00 times its stress)" in one
+
+
+def test_a_compression_stopped_at_its_cap_before_its_end_says_so(cellsim, tmp_path):
+    """issue 51: a compression that ends at compression.steps before its end_strain says so in the log,
+    in the file's warning and in the summary's compression_at_cap; one that reaches it does not."""
+    from analysis.results import run_summary
+    case = tmp_path / "case.json"
+    case.write_text('{"cell": {"n_wall": 162, "n_fluid": 100}, "settle": {"max_iterations": 40}, '
+                    '"drying": {"steps": 40}, "compression": {"steps": 300, "plate_speed_m_s": 50}}')
+    outcomes = {}
+    for end_strain in (0.5, 0.01):
+        out = tmp_path / f"to {end_strain}.h5"
+        done = subprocess.run([cellsim, "run", str(case), "-o", str(out), "--quiet",
+                               "--set", f"compression.end_strain={end_strain}"], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        outcomes[end_strain] = (done.stderr, run_summary(out))
+    log, summary = outcomes[0.5]
+    assert summary["compression_at_cap"] is True
+    # after the start's and the drying's warnings (these stages are cut short too)
+    assert "; compression reached compression.steps = 300 at nominal strain " in summary["warning"]
+    assert summary["warning"].endswith(" before compression.end_strain = 0.5")
+    assert "WARNING: compression reached compression.steps = 300" in log
+    log, summary = outcomes[0.01]
+    assert summary["compression_at_cap"] is False and "compression reached" not in summary["warning"]
+    assert "WARNING: compression" not in log

@@ -35,6 +35,11 @@ CASES = {
     "tissue_negative_strength.json": "tissue.lamella_strength_MPa = -1",
     "tissue_fracture_energy_below_elastic.json": "tissue.lamella_fracture_energy_J_m2 = 0.01",
     "smoothing_length_twice.json": "fluid.h0_um = 8 and fluid.h_over_dx = 1.2 both set the smoothing length",
+    # found by the fuzzing campaign (issue 51; tests/fuzz/corpus holds them too)
+    "duplicate_key.json": "cell.n_wall is given twice in case file",
+    "too_many_particles.json": "particles in all, more than one run builds",
+    "derived_cap_too_many_steps.json": "drying.steps = auto: 80 us at time.dt_ns = 1e-300",
+    "fill_gap_leaves_no_fluid.json": "cell.fill_gap_um = 74.99: cell 0",
 }
 
 # workflow config (merged over config/config.yaml) -> what the message must name: the problem, and the
@@ -58,6 +63,8 @@ CONFIGS = {
     "study_unknown_level.yaml": "studies.extra.vary.resolution: value 5",
     "study_target_all.yaml": "'all' is not one of ['convergence', 'tissue', 'extensions']",
     "shrinkage_reference_unknown.yaml": "figures.tis04.shrinkage_references: unknown reference 'nonesuch'",
+    # found by the fuzzing campaign (issue 51): Snakemake's own merge stopped with a TypeError
+    "value_for_mapping.yaml": "figures.fig01.where = '3.5': config/config.yaml has a mapping there",
 }
 
 
@@ -93,6 +100,8 @@ def test_bad_case_file(cellsim, tmp_path, name):
     (["run", "CASE", "-o", "OUT", "--set", "drying.dryness"], "key=value"),
     (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=abc"], "drying.dryness"),
     (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=inf"], "finite"),
+    (["run", "CASE", "-o", "OUT", "--set", "drying.dryness=1e400"], "drying.dryness = 1e400: value must be finite"),
+    (["run", "CASE", "-o", "OUT", "--set", "coupling.model=\udcff"], "coupling.model = "),  # the byte 0xff
     (["run", "CASE", "-o", "OUT", "--set", "cell.n_wal=100"], "cell.n_wall"),
     (["run", "CASE", "-o", "OUT", "--set", "coupling.model=springs"], "coupling.model"),
     (["run", "CASE", "-o"], "-o needs a value"),
@@ -159,3 +168,83 @@ def test_a_lock_hdf5_cannot_take_names_the_locking_switch(cellsim, tmp_path):
         done = run([cellsim, "run", str(case), "--from", str(out), "-o", str(tmp_path / "next.h5"), "--quiet"])
     assert done.returncode == 4, done.stderr
     assert "--from" in done.stderr and "HDF5_USE_FILE_LOCKING=FALSE" in done.stderr, done.stderr
+
+
+def test_a_file_nested_100_000_deep_is_refused_naming_it(cellsim, tmp_path):
+    """Found by the fuzzer: the message showed the value by the JSON library's recursive dump, which
+    overflowed the stack."""
+    case = tmp_path / "deep.json"
+    case.write_text("[" * 100_000 + "]" * 100_000)
+    done = run([cellsim, "validate", str(case)])
+    assert done.returncode == 2 and "deep.json' holds [[[...: an array nested over 8 deep" in done.stderr, done.stderr
+
+
+def test_a_file_that_is_no_object_is_refused_with_a_set_too(cellsim, tmp_path):
+    """Found by the fuzzer: --set made any top-level value into an object, and the file's content was
+    dropped without a word."""
+    done = run([cellsim, "validate", str(HERE / "cases" / "not_an_object.json"), "--set", "drying.dryness=0.5"])
+    assert done.returncode == 2 and "not_an_object.json' holds [1,2,3]: a case is a JSON object" in done.stderr, done.stderr
+
+
+def test_a_failure_in_the_first_step_after_a_snapshot_exits_3_with_its_partial_file(cellsim, tmp_path):
+    """Found by the fuzzer: the failing state's snapshot took the name of the snapshot of the same step
+    count (the failure comes before the step is counted), HDF5 refused it, and the run exited 1."""
+    case = tmp_path / "case.json"
+    case.write_text('{"cell": {"n_wall": 162, "n_fluid": 100}, "settle": {"max_iterations": 40}, '
+                    '"tissue": {"cells_x": 2, "cells_y": 2, "lateral": "periodic", "period_viscosity_Pa_s": 1e-9}}')
+    out = tmp_path / "out.h5"
+    done = run([cellsim, "run", str(case), "-o", str(out), "--quiet"])
+    assert done.returncode == 3, done.stderr
+    assert "step 0 (t = 0.001 us, drying): the period would strain" in done.stderr
+    assert not out.exists() and (tmp_path / "out.h5.partial").exists()
+
+
+@pytest.fixture(scope="module")
+def rest_state(cellsim, tmp_path_factory):
+    """A small cell at rest (its case, its state), to continue from."""
+    d = tmp_path_factory.mktemp("rest")
+    case = d / "case.json"
+    case.write_text('{"cell": {"n_wall": 162, "n_fluid": 100}, "settle": {"max_iterations": 40}, '
+                    '"drying": {"steps": 0}, "compression": {"steps": 0}}')
+    subprocess.run([cellsim, "run", str(case), "-o", str(d / "rest.h5"), "--quiet"], check=True)
+    return case, d / "rest.h5"
+
+
+def continue_from(cellsim, case, state, tmp_path):
+    out = tmp_path / "out.h5"
+    done = run([cellsim, "run", str(case), "--from", str(state), "-o", str(out), "--quiet", "--set", "drying.steps=5"])
+    assert not out.exists() and not (tmp_path / "out.h5.partial").exists()
+    return done
+
+
+def test_a_bit_flipped_in_a_saved_state_is_refused_not_used(cellsim, rest_state, tmp_path):
+    """Found by the fuzzer: a flipped bit in the saved positions was continued from without a word. Every
+    dataset carries a Fletcher-32 checksum (docs/output-reference.md)."""
+    import h5py
+    case, state = rest_state
+    flipped = tmp_path / "flipped.h5"
+    data = bytearray(state.read_bytes())
+    with h5py.File(state, "r") as f:  # the dataset is one chunk: where it starts in the file
+        chunk = f["state/fluid_positions"].id.get_chunk_info(0).byte_offset
+    data[chunk + 100] ^= 0x10  # a mantissa bit of a position: still a finite number
+    flipped.write_bytes(bytes(data))
+    done = continue_from(cellsim, case, flipped, tmp_path)
+    assert done.returncode == 2, done.stderr
+    assert f"--from '{flipped}' cannot be read as a cellsim result" in done.stderr and "fluid_positions" in done.stderr
+
+
+def test_a_saved_state_with_an_array_one_short_is_refused_before_any_output(cellsim, rest_state, tmp_path):
+    """Found by the fuzzer: a state's masses one shorter than its positions overran a buffer in the pair
+    loop (AddressSanitizer)."""
+    import h5py
+    import shutil
+    case, state = rest_state
+    edited = tmp_path / "edited.h5"
+    shutil.copy(state, edited)
+    with h5py.File(edited, "r+") as f:
+        masses = f["state/fluid_mass"][()]
+        del f["state/fluid_mass"]
+        f["state/fluid_mass"] = masses[:-1]
+    done = continue_from(cellsim, case, edited, tmp_path)
+    assert done.returncode == 2, done.stderr
+    assert f"--from '{edited}': saved state has 99 fluid masses; the case builds 100" in done.stderr

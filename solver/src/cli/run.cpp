@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <sstream>
 #include <vector>
 
 #include "cli/progress.hpp"
@@ -67,6 +68,16 @@ void check_same_start(const nlohmann::json& saved, const nlohmann::json& now, co
   }
 }
 
+// The end a compression was asked for, as its key says it ("" if none: it runs its steps).
+std::string asked_end(const Params& p) {
+  std::ostringstream end;
+  if (p.unload_at_strain)
+    end << "the cell left the top plate after compression.unload_at_strain = " << *p.unload_at_strain;
+  else if (p.end_strain)
+    end << "compression.end_strain = " << *p.end_strain;
+  return end.str();
+}
+
 }  // namespace
 
 void run_case(Params p, const RunOptions& options) {
@@ -81,7 +92,7 @@ void run_case(Params p, const RunOptions& options) {
       throw InputError("--from '" + options.from_path + "' holds a state in compression, not the end of drying "
                        "(run the case with compression.steps = 0)");
     from_rest = saved.state.step == 0;
-    check_same_start(nlohmann::json::parse(saved.case_json), resolved, options.from_path, from_rest);
+    check_same_start(saved.case_doc, resolved, options.from_path, from_rest);
     if (saved.threads != options.threads)
       std::fprintf(stderr,
                    "cellsim: note: --from '%s' ran on %d thread(s) and this run on %d: the result agrees with one "
@@ -90,12 +101,20 @@ void run_case(Params p, const RunOptions& options) {
   }
   Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);
+  if (!options.from_path.empty()) {  // a saved state that does not fit this case: refused before any output
+    try {
+      sim.check_restorable(saved.state);
+    } catch (const InputError& e) {
+      throw InputError("--from '" + options.from_path + "': " + e.what());
+    }
+  }
   ResultFile out(options.output_path);
   out.write_header(resolved, options.threads);
   out.write_mesh(tissue.mesh, tissue.cells, tissue.lamella);
 
   std::vector<Record> records;
   DryingSummary drying;
+  CompressionSummary compression;
   const std::int64_t drying_steps = options.from_path.empty() || from_rest ? *p.drying_steps : 0;
   // Compression ends at compression.end_strain, or, unloading, when the cell leaves the top plate.
   const auto strain_reached = [&](const Record*) {
@@ -153,15 +172,18 @@ void run_case(Params p, const RunOptions& options) {
       if (p.end_strain && !p.unload_at_strain) progress.aim("strain", *p.end_strain);
       run_stage(sim, compression_steps, strain_reached, out, records, progress, "compression",
                 [&] { return sim.nominal_strain(); });
+      compression = {true, asked_end(p), strain_reached(nullptr), compression_steps, sim.nominal_strain()};
+      if (!compression.warning().empty())
+        std::fprintf(stderr, "cellsim: WARNING: %s\n", compression.warning().c_str());
     }
     progress.finish(sim.state().time_s);
   } catch (const NumericalFailure& e) {
-    out.write_drying_summary(drying);
+    out.write_run_summary(drying, compression);
     out.write_snapshot(sim.state(), sim.eos());  // the failing state, for diagnosis
     out.fail(records, e.what());
     throw NumericalFailure(std::string(e.what()) + "; partial results in " + out.partial_path());
   }
-  out.write_drying_summary(drying);
+  out.write_run_summary(drying, compression);
   out.complete(records, sim.state());
 }
 

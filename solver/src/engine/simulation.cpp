@@ -702,7 +702,7 @@ void Simulation::start_compression() {
   s_.start_volume_ratio = cell_volume_ratios();  // what the volume closure holds (volume_closure.hpp)
 }
 
-void Simulation::restore(const State& saved) {
+void Simulation::check_restorable(const State& saved) const {
   if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size() ||
       saved.lamella_intact.size() != s_.lamella_intact.size())
     throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
@@ -714,12 +714,33 @@ void Simulation::restore(const State& saved) {
     throw InputError(std::string("saved state is of a ") + (saved.box.periodic() ? "periodic" : "non-periodic") +
                      " tissue; the case builds a " + (s_.box.periodic() ? "periodic" : "non-periodic") +
                      " one (tissue.lateral)");
+  // Every per-particle and per-bond array as long as its particles or bonds (a file cut or edited
+  // by hand can hold one shorter than the others; found by the fuzzer, issue 51).
+  const auto same = [](const char* what, Eigen::Index have, Eigen::Index want) {
+    if (have != want)
+      throw InputError(std::string("saved state has ") + std::to_string(have) + " " + what + "; the case builds " +
+                       std::to_string(want));
+  };
+  const auto& f = saved.fluid;
+  const auto& w = saved.wall;
+  same("fluid velocities", f.v.cols(), f.x.cols());
+  same("fluid masses", f.m.size(), f.x.cols());
+  same("fluid densities", f.rho.size(), f.x.cols());
+  same("wall velocities", w.v.cols(), w.x.cols());
+  same("lamella openings", static_cast<Eigen::Index>(saved.lamella_peak_opening_m.size()),
+       static_cast<Eigen::Index>(saved.lamella_intact.size()));
+  if (!saved.bond_plastic_elongation_m.empty())  // empty: saved before the wall could yield
+    same("wall bonds", static_cast<Eigen::Index>(saved.bond_plastic_elongation_m.size()),
+         static_cast<Eigen::Index>(mesh_.bonds.size()));
+  if (!fluid_is_sound(f, 0, f.size()) || !wall_is_finite(w, 0, w.size()))
+    throw InputError("saved state has a non-finite position or velocity, or a density or mass that is not positive");
+}
+
+void Simulation::restore(const State& saved) {
+  check_restorable(saved);
   s_ = saved;
   if (s_.bond_plastic_elongation_m.empty())  // saved before the wall could yield
     s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
-  if (s_.bond_plastic_elongation_m.size() != mesh_.bonds.size())
-    throw InputError("saved state has " + std::to_string(saved.bond_plastic_elongation_m.size()) +
-                     " wall bonds; the case builds " + std::to_string(mesh_.bonds.size()));
   neighbours_.invalidate();
   compute_rates();
 }

@@ -37,6 +37,9 @@ class Simulation {
   void step();                  // one kick-drift-kick step of dt
   void start_compression();     // switches L_p and places the plates (model.md §6)
   void restore(const State& saved);  // continue from a saved state (same case geometry)
+  // Throws InputError unless `saved` fits this case: its particles, bonds and period, every array of
+  // them as long, and every value finite (positive densities and masses). restore() checks it too.
+  void check_restorable(const State& saved) const;
   double nominal_strain() const;     // (H_c - H) / H_c during compression, 0 before
 
   const State& state() const { return s_; }

@@ -3,6 +3,7 @@
 // case run at another time step (a resolution level, a time-step study) needs no caps of its own.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <sstream>
 
@@ -19,11 +20,28 @@ inline constexpr double kCapReferenceSpeed_m_s = 1.0;     // plates slower than 
 // 1 m/s gets as much travel as one at 1 m/s (25 us x 1 m/s / speed; faster ones keep the 25 us), and a
 // load-unload (compression.unload_at_strain) adds the way back: the loading's time x plate speed /
 // unload speed.
+// A derived cap is held to its key's range (at most 1e9 steps, as a cap typed in the file): a time step
+// or a plate speed that would ask for more is refused, naming what derived it.
+inline constexpr double kMostStageSteps = 1e9;
+
+inline std::int64_t derived_cap(const char* key, double duration_s, const Params& p, const char* from) {
+  const double steps = duration_s / p.dt_s;
+  if (!(steps <= kMostStageSteps)) {
+    std::ostringstream msg;
+    msg << key << " = auto: " << duration_s * 1e6 << " us at time.dt_ns = " << p.dt_s * 1e9 << from << " is " << steps
+        << " steps, more than the " << kMostStageSteps << " a stage may take; give " << key << " or a larger time.dt_ns";
+    throw InputError(msg.str());
+  }
+  return std::llround(steps);
+}
+
 inline void resolve_stage_caps(Params& p) {
-  if (!p.drying_steps) p.drying_steps = std::llround(kDryingCapTime_s / p.dt_s);
+  if (!p.drying_steps) p.drying_steps = derived_cap("drying.steps", kDryingCapTime_s, p, "");
   const double loading_time_s = kCompressionCapTime_s * std::max(1.0, kCapReferenceSpeed_m_s / p.plate_speed_m_s);
   const double unload_share = p.unload_at_strain ? p.plate_speed_m_s / *p.unload_speed_m_s : 0.0;
-  if (!p.compression_steps) p.compression_steps = std::llround(loading_time_s * (1.0 + unload_share) / p.dt_s);
+  if (!p.compression_steps)
+    p.compression_steps = derived_cap("compression.steps", loading_time_s * (1.0 + unload_share), p,
+                                      " (and compression.plate_speed_m_s, unload_speed_m_s)");
 }
 
 // compression.unload_speed_m_s defaults to the loading speed; a plate that turns back must turn before

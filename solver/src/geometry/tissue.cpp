@@ -253,7 +253,13 @@ Tissue build_tissue(Params& p) {
     std::vector<Eigen::Index> kept;
     for (Eigen::Index i = 0; i < lattice.cols(); ++i)
       if (inside_faces(lattice.col(i), faces, *p.fill_gap_m)) kept.push_back(i);
-    if (kept.empty()) throw InputError("tissue: cell " + std::to_string(c) + " holds no fluid particle");
+    if (kept.empty()) {  // the fill gap (or the faces pressed flat) left no lattice point inside
+      std::ostringstream msg;
+      msg << "cell.fill_gap_um = " << *p.fill_gap_m * 1e6 << ": cell " << c << " (radius " << rc * 1e6
+          << " um, its faces at tissue.centre_distance_over_diameter = " << p.centre_distance_over_diameter
+          << ") holds no fluid particle farther than that from its wall; give a smaller gap";
+      throw InputError(msg.str());
+    }
     Eigen::Matrix3Xd fluid(3, static_cast<Eigen::Index>(kept.size()));
     for (std::size_t i = 0; i < kept.size(); ++i) fluid.col(static_cast<Eigen::Index>(i)) = lattice.col(kept[i]);
     // Its fluid mass: rho0 times the sphere's volume, cut as the faces cut the wall's.

@@ -14,6 +14,7 @@
 #include "engine/density_update.hpp"
 #include "engine/stage_caps.hpp"
 #include "engine/steady_state.hpp"
+#include "geometry/case_size.hpp"
 #include "io/case_schema.hpp"
 #include "physics/volume_closure.hpp"
 
@@ -50,8 +51,25 @@ std::set<std::string> sections() {
   return out;
 }
 
+// True if v nests arrays or objects more than `limit` deep (a walk with its own stack: the serializer
+// recurses, and a file of 100 000 brackets would overflow the call stack).
+bool nested_deeper_than(const json& v, int limit) {
+  std::vector<std::pair<const json*, int>> open{{&v, 0}};
+  while (!open.empty()) {
+    const auto [node, depth] = open.back();
+    open.pop_back();
+    if (!node->is_structured()) continue;
+    if (depth >= limit) return true;
+    for (const auto& child : *node) open.emplace_back(&child, depth + 1);
+  }
+  return false;
+}
+
+// A value as it appears in a message: bytes that are not UTF-8 (a --set of raw bytes) shown replaced,
+// and a value nested deeper than any case shown by its kind only.
 std::string show(const json& v) {
-  std::string s = v.dump();
+  if (nested_deeper_than(v, 8)) return v.is_array() ? "[[[...: an array nested over 8 deep" : "{{{...: an object nested over 8 deep";
+  std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
   return s.size() > 40 ? s.substr(0, 37) + "..." : s;
 }
 
@@ -125,6 +143,50 @@ std::string nearest_key(const std::string& key, const std::vector<std::string>& 
   return best;
 }
 
+// The first key given twice in one object, as "section.key" (nlohmann keeps the last and says
+// nothing: the other value would be silently ignored); empty if none. A SAX pass over the text.
+class DuplicateKeyFinder : public nlohmann::json_sax<json> {
+ public:
+  std::string duplicate;
+  bool key(string_t& name) override {
+    if (!open_.empty() && !open_.back().insert(name).second && duplicate.empty()) {
+      for (const auto& outer : path_) duplicate += outer + ".";
+      duplicate += name;
+    }
+    last_key_ = name;
+    return true;
+  }
+  bool start_object(std::size_t) override {
+    if (!open_.empty()) path_.push_back(last_key_);
+    open_.emplace_back();
+    return true;
+  }
+  bool end_object() override {
+    open_.pop_back();
+    if (!path_.empty()) path_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    open_.emplace_back();  // an array's objects are not the case's keys: their own scopes
+    path_.push_back(last_key_ + "[]");
+    return true;
+  }
+  bool end_array() override { return end_object(); }
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  std::vector<std::set<std::string>> open_;
+  std::vector<std::string> path_;
+  std::string last_key_;
+};
+
 // The JSON parser rejects numbers like 1e999 without saying where; find the key they belong to.
 std::string key_before(const std::string& text, const std::string& token) {
   const auto at = text.find(token);
@@ -142,8 +204,9 @@ json read_case_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot open case file '" + path + "': no such file or not readable");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  json doc;
   try {
-    return json::parse(text);
+    doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw InputError("case file '" + path + "' is not valid JSON: " + e.what());
   } catch (const json::out_of_range& e) {  // number overflow, e.g. 1e999
@@ -152,6 +215,15 @@ json read_case_file(const std::string& path) {
     const std::string token = q1 != std::string::npos && q2 > q1 ? what.substr(q1 + 1, q2 - q1 - 1) : "";
     throw InputError(key_before(text, token) + " = " + token + ": value must be finite (case file '" + path + "')");
   }
+  if (!doc.is_object())
+    throw InputError("case file '" + path + "' holds " + show(doc) + ": a case is a JSON object of sections " +
+                     show(json(sections())));
+  DuplicateKeyFinder finder;
+  json::sax_parse(text, &finder);
+  if (!finder.duplicate.empty())
+    throw InputError(finder.duplicate + " is given twice in case file '" + path + "' (one of the values would be "
+                     "ignored): keep one");
+  return doc;
 }
 
 void apply_override(json& doc, const std::string& assignment) {
@@ -176,7 +248,9 @@ void apply_override(json& doc, const std::string& assignment) {
   json value;
   try {
     value = json::parse(text);
-  } catch (const json::parse_error&) {
+  } catch (const json::out_of_range&) {  // a number too large for a double, e.g. 1e400
+    throw InputError(key + " = " + text + ": value must be finite (" + describe_range(*find_param(key)) + ")");
+  } catch (const json::exception&) {
     throw InputError(key + " = '" + text + "': not a number (" + describe_range(*find_param(key)) + ")");
   }
   doc[section][key.substr(key.find('.') + 1)] = value;
@@ -210,6 +284,7 @@ Params validate_case(const json& doc) {
       assign(*spec, value, p);
     }
   }
+  check_case_size(p);
   resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
   resolve_density_update(p);
   resolve_unloading(p);

@@ -57,6 +57,10 @@ void write_typed(hid_t parent, const std::string& name, const std::vector<T>& da
   Handle space(check(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), "H5Screate"),
                H5Sclose);
   Handle dcpl = untimed(H5P_DATASET_CREATE);
+  if (n > 0) {  // one chunk with a Fletcher-32 checksum: a bit changed on disk fails the read (issue 51)
+    check(H5Pset_chunk(dcpl.id(), static_cast<int>(dims.size()), dims.data()), "H5Pset_chunk", 0);
+    check(H5Pset_fletcher32(dcpl.id()), "H5Pset_fletcher32", 0);
+  }
   Handle set(check(H5Dcreate2(parent, name.c_str(), file_type, space.id(), H5P_DEFAULT, dcpl.id(), H5P_DEFAULT),
                    "create dataset " + name),
              H5Dclose);
@@ -118,11 +122,14 @@ std::string last_error() {
 
 Handle create_file(const std::string& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
-  Handle fcpl(check(H5Pcreate(H5P_FILE_CREATE), "H5Pcreate"), H5Pclose);
+  Handle fcpl = untimed(H5P_FILE_CREATE);  // the root group's header too (the 1.8 format keeps its times)
+  // The HDF5 1.8 file format: its superblock, object headers (the attributes) and link storage carry
+  // checksums, so a changed byte of the file's structure fails to open or read, as the datasets' do.
+  Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate"), H5Pclose);
+  check(H5Pset_libver_bounds(fapl.id(), H5F_LIBVER_V18, H5F_LIBVER_LATEST), "H5Pset_libver_bounds", 0);
   errno = 0;
-  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), H5P_DEFAULT), H5Fclose);
+  Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), fapl.id()), H5Fclose);
   if (file.id() < 0) file_error("create", path, errno);
-  // The root group is created with the file; later groups use untimed property lists.
   return file;
 }
 

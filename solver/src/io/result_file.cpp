@@ -67,7 +67,9 @@ void ResultFile::write_header(const nlohmann::json& resolved_case, int threads) 
   snapshots_ = h5::create_group(root, "snapshots");
 }
 
-void ResultFile::write_drying_summary(const DryingSummary& d) { cellsim::write_drying_summary(file_.id(), d); }
+void ResultFile::write_run_summary(const DryingSummary& d, const CompressionSummary& c) {
+  cellsim::write_run_summary(file_.id(), d, c);
+}
 
 void ResultFile::write_mesh(const WallMesh& mesh, const CellRanges& cells, const std::vector<LamellaBond>& lamella) {
   const long n_fluid = static_cast<long>(cells.fluid.back());
@@ -106,6 +108,9 @@ void ResultFile::write_mesh(const WallMesh& mesh, const CellRanges& cells, const
 void ResultFile::write_snapshot(const State& s, const EquationOfState& eos) {
   std::ostringstream name;
   name << std::setw(9) << std::setfill('0') << s.step;
+  // A numerical failure in the first half of the step after a snapshot comes before that step is
+  // counted: its state (run.cpp saves it for diagnosis) goes beside the snapshot of the same count.
+  if (h5::exists(snapshots_.id(), name.str())) name << "_failed";
   h5::Handle g = h5::create_group(snapshots_.id(), name.str());
   h5::set_attr(g.id(), "time_s", s.time_s);
   h5::set_attr(g.id(), "step", static_cast<std::int64_t>(s.step));

@@ -10,6 +10,7 @@
 #include "engine/measures.hpp"
 #include "geometry/tissue.hpp"
 #include "geometry/wall_mesh.hpp"
+#include "io/compression_summary.hpp"
 #include "io/drying_summary.hpp"
 #include "io/h5.hpp"
 #include "io/xdmf.hpp"
@@ -28,7 +29,7 @@ class ResultFile {
   void write_header(const nlohmann::json& resolved_case, int threads);  // threads: of the fluid pair loop
   // The wall's triangles, bonds and hinges, each particle's cell, and a tissue's middle-lamella bonds.
   void write_mesh(const WallMesh& mesh, const CellRanges& cells, const std::vector<LamellaBond>& lamella);
-  void write_drying_summary(const DryingSummary& d);
+  void write_run_summary(const DryingSummary& d, const CompressionSummary& c);
   void write_snapshot(const State& s, const EquationOfState& eos);
   // Time series, the state to continue from, completed = 1; then rename and write the sidecars.
   void complete(const std::vector<Record>& records, const State& final_state);

@@ -40,7 +40,7 @@ constexpr EnergyField kEnergyFields[] = {
 
 }  // namespace
 
-void write_drying_summary(hid_t parent, const DryingSummary& d) {  // read back in read_saved_run
+void write_run_summary(hid_t parent, const DryingSummary& d, const CompressionSummary& c) {  // drying: read_saved_run
   h5::set_attr(parent, "settle_iterations", std::int64_t{d.settle.iterations});
   h5::set_attr(parent, "settle_residual", d.settle.residual);
   h5::set_attr(parent, "settle_converged", std::int64_t{d.settle.converged});
@@ -48,7 +48,10 @@ void write_drying_summary(hid_t parent, const DryingSummary& d) {  // read back 
   h5::set_attr(parent, "settle_volume_ratio", d.settle.volume_ratio);
   h5::set_attr(parent, "drying_steady", std::int64_t{d.steady});
   h5::set_attr(parent, "drying_steady_time_s", d.steady_time_s);
-  h5::set_attr(parent, "warning", d.warning());
+  h5::set_attr(parent, "compression_reached_end", c.reached_code());
+  h5::set_attr(parent, "compression_end_strain", c.strain);
+  const std::string joined = d.warning() + (d.warning().empty() || c.warning().empty() ? "" : "; ") + c.warning();
+  h5::set_attr(parent, "warning", joined);
 }
 
 void write_state(hid_t parent, const State& s) {
@@ -91,7 +94,7 @@ SavedRun read_saved_run(const std::string& path) {
     h5::Handle file = h5::open_file_readonly(path);
     if (!h5::has_attr(file.id(), "completed") || h5::get_attr_int(file.id(), "completed") != 1)
       throw InputError("--from '" + path + "' is not a completed cellsim result (completed != 1)");
-    run.case_json = h5::get_attr_string(file.id(), "case_json");
+    run.case_doc = nlohmann::json::parse(h5::get_attr_string(file.id(), "case_json"));
     if (h5::has_attr(file.id(), "threads")) run.threads = static_cast<int>(h5::get_attr_int(file.id(), "threads"));
     DryingSummary& d = run.drying;  // as write_drying_summary wrote it
     d.settle.iterations = h5::get_attr_int(file.id(), "settle_iterations");

@@ -4,8 +4,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/state.hpp"
 #include "engine/measures.hpp"
+#include "io/compression_summary.hpp"
 #include "io/drying_summary.hpp"
 #include "io/h5.hpp"
 
@@ -13,13 +16,15 @@ namespace cellsim {
 
 void write_state(hid_t parent, const State& s);
 
-// The drying summary as attributes of `parent` (settle_*, drying_steady, drying_steady_time_s, warning).
-void write_drying_summary(hid_t parent, const DryingSummary& d);
+// How the run went, as attributes of `parent`: the drying summary (settle_*, drying_steady,
+// drying_steady_time_s), the compression's (compression_reached_end, compression_end_strain), and the
+// warning that joins theirs.
+void write_run_summary(hid_t parent, const DryingSummary& d, const CompressionSummary& c);
 
 struct SavedRun {
   State state;
   std::vector<Record> records;
-  std::string case_json;
+  nlohmann::json case_doc;  // the case it ran, resolved (its case_json attribute)
   DryingSummary drying;
   int threads = 1;  // the threads it ran on: a run continued on another count agrees to round-off only
 };
