@@ -121,19 +121,20 @@ def warnings_box(summary):
     if "warning" not in summary.columns:
         return ""
     summary = summary.assign(warning=summary["warning"].fillna(""))
+    flagged, capped = _warning_parts(summary, compression=False), _warning_parts(summary, compression=True)
+
+    def items(cases):
+        return "<ul>" + "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in cases.items()) + "</ul>"
+
     box = ""
-    flagged = _warning_parts(summary, compression=False)
     if flagged:
-        items = "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in flagged.items())
         box += (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady "
                 f"state as they should.</b> Their compressions start from a cell still settling; raise drying.steps "
-                f"or settle.max_iterations in config.<ul>{items}</ul></div>")
-    capped = _warning_parts(summary, compression=True)
+                f"or settle.max_iterations in config.{items(flagged)}</div>")
     if capped:
-        items = "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in capped.items())
         box += (f"<details><summary>Note: {len(capped)} of {len(summary)} compressions stopped at their cap "
                 f"(compression.steps) before the end they were asked for; their curves end at the strain "
-                f"given.</summary><ul>{items}</ul></details>")
+                f"given.</summary>{items(capped)}</details>")
     return box
 
 
