@@ -11,7 +11,13 @@ class IncompleteResult(RuntimeError):
 
 
 def open_result(path):
-    f = h5py.File(path, "r")
+    """A completed result file, open for reading; IncompleteResult naming the file if it is not one (a
+    half-written or damaged file in a results folder, e.g. one copied in part)."""
+    try:
+        f = h5py.File(path, "r")
+    except OSError as error:  # h5py's message does not name the file
+        raise IncompleteResult(f"{path}: cannot be read as a cellsim result ({error}); delete it and run the "
+                               f"workflow again, which runs its case anew") from error
     if f.attrs.get("completed", 0) != 1:
         f.close()
         raise IncompleteResult(f"{path}: not a completed cellsim result")

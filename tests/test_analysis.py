@@ -1,4 +1,5 @@
 """The analysis package on its own: matrix expansion, quantities, references, metrics, claims, a figure."""
+import pathlib
 import subprocess
 
 import numpy as np
@@ -548,3 +549,14 @@ def test_a_compression_stopped_at_its_cap_before_its_end_says_so(cellsim, tmp_pa
     log, summary = outcomes[0.01]
     assert summary["compression_at_cap"] is False and "compression reached" not in summary["warning"]
     assert "WARNING: compression" not in log
+
+
+def test_a_half_written_result_in_a_results_folder_is_named_not_read(small_runs, tmp_path):
+    """issue 51: a result file cut short (copied in part, a disk that filled) stops the tables with an
+    error that names the file, not with h5py's message, which does not."""
+    from analysis.results import IncompleteResult, timeseries
+    whole = pathlib.Path(small_runs[1.0][0])
+    cut = tmp_path / "cut.h5"
+    cut.write_bytes(whole.read_bytes()[: whole.stat().st_size // 2])
+    with pytest.raises(IncompleteResult, match=r"cut\.h5: cannot be read as a cellsim result .*truncated file"):
+        timeseries(cut)
