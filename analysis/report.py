@@ -89,7 +89,8 @@ def matrix_table(summary, axes, cell_links=None):
     """One row per case; with cell_links ({case: relative path}), a link to its 3-D page."""
     columns = ["case"] + list(axes) + ["studies", "drying_steady_time_us", "dried_M_over_M0", "dried_V_over_V0",
                                        "dried_mean_pressure_kPa",
-                                       "strain_reached", "stress_kPa_at_0.05", "stress_kPa_at_0.10", "peak_force_top_uN"]
+                                       "strain_reached", "compression_at_cap", "stress_kPa_at_0.05", "stress_kPa_at_0.10",
+                                       "peak_force_top_uN"]
     columns = [c for c in columns if c in summary.columns]
     links = cell_links or {}
     head = ("<th>3-D</th>" if links else "") + "".join(f"<th>{html.escape(c)}</th>" for c in columns)
