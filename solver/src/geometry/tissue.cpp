@@ -1,10 +1,13 @@
 #include "geometry/tissue.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -166,6 +169,46 @@ bool inside_faces(const Eigen::Vector3d& x, const std::vector<Face>& faces, doub
   return true;
 }
 
+// Points binned on a grid of spacing `range`: the nearest within range of a query looks at 27 bins, not
+// at every point (a face of a fine wall holds tens of thousands: all pairs took minutes; issue 51).
+class NearestWithin {
+ public:
+  NearestWithin(const std::vector<int>& ids, const std::function<Eigen::Vector3d(int)>& at, double range_m)
+      : at_(at), range_m_(range_m) {
+    for (int id : ids) bins_[key(bin_of(at(id)))].push_back(id);
+  }
+  // The point nearest x closer than the range (ties: the smallest id, as a scan in id order finds),
+  // with its squared distance; -1 if none.
+  std::pair<int, double> nearest(const Eigen::Vector3d& x) const {
+    int best = -1;
+    double best2 = range_m_ * range_m_;
+    const std::array<std::int64_t, 3> c = bin_of(x);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto bin = bins_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if (bin == bins_.end()) continue;
+          for (int id : bin->second) {
+            const double r2 = (at_(id) - x).squaredNorm();
+            if (r2 < best2 || (r2 == best2 && best >= 0 && id < best)) best2 = r2, best = id;
+          }
+        }
+    return {best, best2};
+  }
+
+ private:
+  std::array<std::int64_t, 3> bin_of(const Eigen::Vector3d& x) const {
+    return {static_cast<std::int64_t>(std::floor(x.x() / range_m_)), static_cast<std::int64_t>(std::floor(x.y() / range_m_)),
+            static_cast<std::int64_t>(std::floor(x.z() / range_m_))};
+  }
+  static std::int64_t key(const std::array<std::int64_t, 3>& c) {  // bins of one tissue: 2^21 a side is ample
+    return ((c[0] & 0x1FFFFF) << 42) | ((c[1] & 0x1FFFFF) << 21) | (c[2] & 0x1FFFFF);
+  }
+  std::function<Eigen::Vector3d(int)> at_;
+  double range_m_;
+  std::unordered_map<std::int64_t, std::vector<int>> bins_;
+};
+
 // Facing wall particles of cells a and b bonded: each particle near the face takes its nearest
 // partner across it, if within range; pairs found from both sides count once.
 void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, double range_m,
@@ -180,19 +223,16 @@ void bond_faces(const Tissue& t, int a, int b, const Face& face, double gap_m, d
   const std::vector<int> side_a = near_face(a, face.normal, face.distance_m);
   const std::vector<int> side_b = near_face(b, -face.normal, between - face.distance_m - gap_m);  // b's own face
   std::vector<LamellaBond> found;
-  // i of a and j of b, b's particle seen in the image that faces a
-  const auto distance2 = [&](int i, int j) { return (t.wall_x.col(j) + face.image - t.wall_x.col(i)).squaredNorm(); };
-  const auto nearest = [&](int from, const std::vector<int>& others, bool from_a) {
-    int best = -1;
-    double best2 = range_m * range_m;
-    for (int o : others) {
-      const double r2 = from_a ? distance2(from, o) : distance2(o, from);
-      if (r2 < best2) best2 = r2, best = o;
-    }
+  // a's particles where they are, b's in the image that faces a
+  const auto at_a = [&](int i) -> Eigen::Vector3d { return t.wall_x.col(i); };
+  const auto at_b = [&](int j) -> Eigen::Vector3d { return t.wall_x.col(j) + face.image; };
+  const NearestWithin near_a(side_a, at_a, range_m), near_b(side_b, at_b, range_m);
+  const auto bond = [&](int from, const NearestWithin& others, const Eigen::Vector3d& x) {
+    const auto [best, best2] = others.nearest(x);
     if (best >= 0) found.push_back({std::min(from, best), std::max(from, best), std::sqrt(best2)});
   };
-  for (int i : side_a) nearest(i, side_b, true);
-  for (int j : side_b) nearest(j, side_a, false);
+  for (int i : side_a) bond(i, near_b, at_a(i));
+  for (int j : side_b) bond(j, near_a, at_b(j));
   const auto pair_of = [](const LamellaBond& bond) { return std::make_pair(bond.a, bond.b); };
   std::sort(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) < pair_of(y); });
   found.erase(std::unique(found.begin(), found.end(), [&](const auto& x, const auto& y) { return pair_of(x) == pair_of(y); }),
