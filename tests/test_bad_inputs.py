@@ -65,6 +65,8 @@ CONFIGS = {
     "shrinkage_reference_unknown.yaml": "figures.tis04.shrinkage_references: unknown reference 'nonesuch'",
     # found by the fuzzing campaign (issue 51): Snakemake's own merge stopped with a TypeError
     "value_for_mapping.yaml": "figures.fig01.where = '3.5': config/config.yaml has a mapping there",
+    # a coupled key without its section: a ValueError in the matrix
+    "coupled_key_without_section.yaml": ("'G_Mpa' does not match", "instance['axes']['cells']['coupled']['27']"),
 }
 
 
