@@ -297,7 +297,8 @@ Tissue build_tissue(Params& p) {
       std::ostringstream msg;
       msg << "cell.fill_gap_um = " << *p.fill_gap_m * 1e6 << ": cell " << c << " (radius " << rc * 1e6
           << " um, its faces at tissue.centre_distance_over_diameter = " << p.centre_distance_over_diameter
-          << ") holds no fluid particle farther than that from its wall; give a smaller gap";
+          << " and tissue.wall_gap_um = " << gap * 1e6
+          << ") holds no fluid particle farther than that from its wall; give smaller gaps";
       throw InputError(msg.str());
     }
     Eigen::Matrix3Xd fluid(3, static_cast<Eigen::Index>(kept.size()));
