@@ -250,3 +250,12 @@ def test_a_saved_state_with_an_array_one_short_is_refused_before_any_output(cell
     done = continue_from(cellsim, case, edited, tmp_path)
     assert done.returncode == 2, done.stderr
     assert f"--from '{edited}': saved state has 99 fluid masses; the case builds 100" in done.stderr
+
+
+def test_an_infinite_number_after_a_very_long_string_is_named(cellsim, tmp_path):
+    """Found by the fuzzer: the search for the key of a number like 1e999 used std::regex, which recursed
+    per character and overflowed the stack on a 100 000-character string before it."""
+    case = tmp_path / "long.json"
+    case.write_text('{"fluid": {"viscosity_Pa_s": "' + "x" * 100_000 + '"}, "tissue": {"cells_y": -1e999}}')
+    done = run([cellsim, "validate", str(case)])
+    assert done.returncode == 2 and "tissue.cells_y = -1e999: value must be finite" in done.stderr, done.stderr

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <regex>
+#include <cctype>
 #include <set>
 #include <sstream>
 
@@ -187,16 +187,32 @@ class DuplicateKeyFinder : public nlohmann::json_sax<json> {
   std::string last_key_;
 };
 
-// The JSON parser rejects numbers like 1e999 without saying where; find the key they belong to.
+// The JSON parser rejects numbers like 1e999 without saying where; find the key they belong to: the
+// last string before the token that a colon follows, and the last such string a '{' follows (its
+// section). One pass over the text (std::regex recursed per character and overflowed the stack on a
+// 100 000-character string: found by the fuzzer, issue 51).
 std::string key_before(const std::string& text, const std::string& token) {
   const auto at = text.find(token);
   if (at == std::string::npos) return "?";
-  static const std::regex key_re(R"re("([^"]+)"\s*:)re");
-  static const std::regex section_re(R"re("([^"]+)"\s*:\s*\{)re");
   std::string key, section;
-  const std::string before = text.substr(0, at);
-  for (std::sregex_iterator it(before.begin(), before.end(), key_re), end; it != end; ++it) key = (*it)[1];
-  for (std::sregex_iterator it(before.begin(), before.end(), section_re), end; it != end; ++it) section = (*it)[1];
+  const auto skip_space = [&](std::size_t i) {
+    while (i < at && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    return i;
+  };
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] != '"') continue;
+    std::size_t end = i + 1;  // the closing quote, past escaped characters
+    while (end < at && text[end] != '"') end += text[end] == '\\' ? 2 : 1;
+    if (end >= at) break;
+    const std::string name = text.substr(i + 1, end - i - 1);
+    const std::size_t colon = skip_space(end + 1);
+    if (colon < at && text[colon] == ':') {
+      key = name;
+      const std::size_t value = skip_space(colon + 1);
+      if (value < at && text[value] == '{') section = name;
+    }
+    i = end;
+  }
   return section.empty() || section == key ? key : section + "." + key;
 }
 
