@@ -23,11 +23,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 // The limit is the highest ratio measured on this project's 2-core machines, times a margin of 1.5
 // for machine noise (measured 2026-11-23 with the build of that day; ctest runs two tests at once):
-//   x86-64-v3 build (AVX2 four-lane pair loop): 2.04-2.06 idle, up to 2.74 beside a compile -> 4.1;
+//   x86-64-v3 build (AVX2 four-lane pair loop): 2.04-2.06 idle, up to 2.74 beside a compile; on the
+//     "Intel Xeon Processor @ 2.50GHz" machines of 2026-11-27 5.47-5.65 idle, the build of 2026-11-23
+//     (2e60d8e) and this one alike (0.90-0.93 ms a step against 0.165 ms a loop) -> 8.5;
 //   baseline build (-DCELLSIM_X86_64_V3=OFF):    8.63-8.86 -> 13.3 (its four-lane pair loop is 4x
 //   slower than the AVX2 one; see issue "performance at scale").
 // 1.5x catches a lost optimisation flag, a per-step allocation storm or an O(N^2) loop in a phase.
-constexpr double kMeasuredHighest = std::string_view(kInstructionSet) == "x86-64-v3" ? 2.74 : 8.86;
+constexpr double kMeasuredHighest = std::string_view(kInstructionSet) == "x86-64-v3" ? 5.65 : 8.86;
 constexpr double kMargin = 1.5;
 constexpr double kRatioLimit = kMeasuredHighest * kMargin;
 
