@@ -734,6 +734,20 @@ void Simulation::check_restorable(const State& saved) const {
          static_cast<Eigen::Index>(mesh_.bonds.size()));
   if (!fluid_is_sound(f, 0, f.size()) || !wall_is_finite(w, 0, w.size()))
     throw InputError("saved state has a non-finite position or velocity, or a density or mass that is not positive");
+  const auto finite = [](const std::vector<double>& v) {
+    return all_finite(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  };
+  if (!finite(saved.lamella_peak_opening_m) || !finite(saved.bond_plastic_elongation_m) ||
+      !finite(saved.plates.start_layer_height_m))
+    throw InputError("saved state has a non-finite lamella opening, plastic elongation or layer height");
+  const bool scalars_sound = std::isfinite(saved.time_s) && saved.smoothing_length_m > 0 &&
+                             saved.initial_fluid_mass_kg > 0 && saved.reference_diameter_m > 0 && w.mass_kg > 0 &&
+                             std::isfinite(saved.smoothing_length_m) && std::isfinite(saved.initial_fluid_mass_kg) &&
+                             std::isfinite(saved.reference_diameter_m) && std::isfinite(w.mass_kg) &&
+                             std::isfinite(saved.box.length_x_m) && std::isfinite(saved.box.length_y_m);
+  if (!scalars_sound)
+    throw InputError("saved state has a time, smoothing length, mass, diameter or period that is not finite (or "
+                     "not positive)");
 }
 
 void Simulation::restore(const State& saved) {
