@@ -101,7 +101,7 @@ def matrix_table(summary, axes, cell_links=None):
             link = links.get(row["case"])
             cells = (f"<td><a href='{html.escape(link)}'>view</a></td>" if link else "<td></td>") + cells
         body.append(f"<tr>{cells}</tr>")
-    return f"<table><tr>{head}</tr>{''.join(body)}</table>"
+    return f"<div class='wide'><table><tr>{head}</tr>{''.join(body)}</table></div>"  # scrolls in its own box
 
 
 def _warning_parts(summary, compression):
