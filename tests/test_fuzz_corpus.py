@@ -8,7 +8,6 @@ The solver's mutants carry the marker `sanitizer`: scripts/test runs them in its
 CELLSIM pointing at the build under AddressSanitizer and UndefinedBehaviorSanitizer."""
 import json
 import random
-import subprocess
 
 import pytest
 

@@ -5,7 +5,6 @@ contradict each other. A mutant is what one solver command gets: the case file's
 arguments, with the operations that made it (seeded: the same seed gives the same mutants)."""
 import copy
 import json
-import random
 from dataclasses import dataclass, field
 
 # Small valid cases that run a few dozen steps in seconds under the sanitizers: every mutation starts

@@ -5,12 +5,10 @@ config.yaml, so null is how a file takes a key away), an unknown key, a list whe
 study that names an axis, a figure or a reference that does not exist. Every one must be planned or
 refused with a message that names the key (rules: refused_names_the_key)."""
 import copy
-import random
 import re
 import subprocess
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import yaml
 

@@ -6,16 +6,15 @@ or, where the change left what the solver reads intact (a flip in unused bytes),
 result the intact file gives; never a crash, a hang or a silent use."""
 import hashlib
 import json
-import os
 import random
 import shutil
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import h5py
 import numpy as np
 
 from tests.fuzz import rules, solver_cases
+from tests.fuzz.case_mutations import SEEDS
 
 SOURCES = {  # name: (case keys over the small cell, drying steps: 0 = a cell at rest)
     "rest": ({}, 0),
@@ -38,17 +37,12 @@ class FileMutant:
 
 def _case(source):
     keys, drying_steps = SOURCES[source]
-    case = json.loads(json.dumps(solver_cases_seed()))
+    case = json.loads(json.dumps(SEEDS["cell"]))  # a copy
     for section, body in keys.items():
         case.setdefault(section, {}).update(body)
     case["drying"]["steps"] = drying_steps
     case["compression"]["steps"] = 0
     return case
-
-
-def solver_cases_seed():
-    from tests.fuzz.case_mutations import SEEDS
-    return SEEDS["cell"]
 
 
 def _digest(path):
