@@ -8,11 +8,13 @@ import numpy as np
 import pandas as pd
 
 from analysis.aggregate import rows_of
+from analysis.html_page import frame_table
+from analysis.matrix import case_default
 
 STRAINS = (0.05, 0.10)
 QUASI_STATIC_TOLERANCE = 0.05  # the two slowest speeds within 5 %: the quasi-static limit
 SPEED, LP = "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa"
-REAL_LP = 1e-12                 # m/(s Pa): the paper's compression L_p, a real cell's (model.md §5)
+REAL_LP = case_default(LP)      # m/(s Pa): the paper's compression L_p, a real cell's (model.md §5)
 REFERENCE_STRAIN = 0.10         # the mass lost and the drainage time are read at this strain
 # 1/s: nominal strain rates of texture-analyser tests on tissue, crosshead speeds of 0.1-20 mm/min on samples
 # about 10 mm high (a cell in the tissue strains as fast as the tissue).
@@ -123,7 +125,6 @@ def drainage_text(drained):
 
 def section(config, summary):
     """The report's section on the bounds, or "" if the run has neither study."""
-    from analysis.report import frame_table
     studies = config["studies"]
     quasi_static = quasi_static_table(summary) if "rate_bounds" in studies else pd.DataFrame()
     drained = drained_table(summary) if "drainage" in studies else pd.DataFrame()

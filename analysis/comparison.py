@@ -8,6 +8,8 @@ import os
 import numpy as np
 import pandas as pd
 
+from analysis.html_page import cell_text
+
 
 KEY = "compare_with"
 
@@ -66,7 +68,6 @@ def read_other_claims(path):
 def section(config, rows):
     """The report's claims section for a run with `compare_with`: the two runs side by side and, in plain
     words, which conclusions changed; or a note saying how to get the other run."""
-    from analysis.report import cell_text
     out_dir, other_label, this_label = other(config)
     other_rows = read_other_claims(other_claims_file(config))
     if other_rows is None:
@@ -89,7 +90,6 @@ def section(config, rows):
 
 def changed_text(table, other_label, this_label):
     """Which conclusions changed between the runs, in plain words, with their values."""
-    from analysis.report import cell_text
     judged_both = [r for r in table if judged(r["verdict"]) and judged(r["other_verdict"])]
     changed = [r for r in judged_both if r["changed"]]
     head = (f"<h3>Which conclusions changed</h3><p>Of {len(table)} claims, {len(judged_both)} are judged in both "

@@ -1,15 +1,12 @@
 """The convergence target's tables and page (`snakemake --cores 2 convergence`): for each convergence
 study, the metrics of every case along its refined axis (resolution level, time step, or a swept
 parameter: h0/dx, K, the plate speed), the relative change between successive cases and, where three
-levels allow it, the observed order of convergence; the analytic anchors (analysis/anchors.py). Criteria
-(docs/model-closures.md, "The verification ladder"): resolution, the stresses at strains 0.05 and 0.10,
-the peak force and the end-of-drying V/V0 change by less than 10 % between the two finest levels and
-F / (p A_c) by less than 5 %; time step, the stresses by less than 3 % between the two steps; every
-compression keeps its energy account to 1 % of the plate work, and the pressure coupling's backstop
-carries under 2 % of the load. A swept parameter has no criterion: its table says how much it moves the
-answer. The stress at a strain is the mean over the records within +-0.01 strain of it
-(aggregate.smoothed_stress_at_strain), so that the ripple of the plate contact from record to record does
-not pass for a change of the curve."""
+levels allow it, the observed order of convergence; the analytic anchors (analysis/anchors.py). The
+criteria (docs/model-closures.md, "The verification ladder") are LIMITS, ENERGY_LIMIT and BACKSTOP_LIMIT
+below, and the page states them from there (criteria_text). A swept parameter has no criterion: its table
+says how much it moves the answer. The stress at a strain is the mean over the records within +-0.01
+strain of it (aggregate.smoothed_stress_at_strain), so that the ripple of the plate contact from record to
+record does not pass for a change of the curve."""
 import html
 import math
 import pathlib
@@ -18,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from analysis.matrix import target_of
-from analysis import report
+from analysis import html_page
 from analysis.aggregate import rows_of
 
 # (summary column, heading): what each case reports.
@@ -38,6 +35,26 @@ LIMITS = {"resolution": {"smoothed_stress_kPa_at_0.05": 0.10, "smoothed_stress_k
                          "peak_force_top_uN": 0.10, "dried_V_over_V0": 0.10, "load_F_over_pA": 0.05},
           "dt_ns": {"smoothed_stress_kPa_at_0.05": 0.03, "smoothed_stress_kPa_at_0.10": 0.03}}
 ENERGY_LIMIT, BACKSTOP_LIMIT = 0.01, 0.02  # of the plate work; of the plate force
+AXIS_WORDS = {"resolution": "between the two finest resolution levels", "dt_ns": "between the two time steps"}
+
+
+def percent(fraction):
+    return f"{100 * fraction:.0f} %"
+
+
+def criteria_text():
+    """The criteria in words, from LIMITS, ENERGY_LIMIT and BACKSTOP_LIMIT (the one place they are set)."""
+    parts = []
+    for axis, limits in LIMITS.items():
+        by_limit = {}
+        for metric, limit in limits.items():
+            by_limit.setdefault(limit, []).append(dict(METRICS)[metric].split(" [")[0])
+        said = [f"{', '.join(names[:-1]) + ' and ' if len(names) > 1 else ''}{names[-1]} by less than {percent(limit)}"
+                for limit, names in by_limit.items()]
+        parts.append(f"{AXIS_WORDS.get(axis, axis)}, {'; '.join(said)}")
+    return (f"Criteria: {'; '.join(parts)}; every compression keeps its energy account within "
+            f"{percent(ENERGY_LIMIT)} of the plate work, and the pressure coupling's backstop carries under "
+            f"{percent(BACKSTOP_LIMIT)} of the load.")
 GROUPING_AXES = ("coupling", "dryness")  # rows are grouped by these, in this order
 
 
@@ -129,7 +146,7 @@ def verdicts(config, table):
     """Per refining study and group: the largest change of each criterion's metric between the two finest
     refinements, against its limit ('incomplete' while a refinement of the study is missing, 'not reached'
     where the compression stopped short of a strain); a sweep gets none. For every study, the largest
-    energy residual (against 1 % of the plate work) and backstop share (against 2 % of the force)."""
+    energy residual (against ENERGY_LIMIT of the plate work) and backstop share (BACKSTOP_LIMIT of the force)."""
     out = []
     for (study, axis), rows in table.groupby(["study", "refined_axis"], sort=False):
         levels = len(config["studies"][study]["vary"][axis])
@@ -156,7 +173,7 @@ def verdicts(config, table):
             energy = group["compression_energy_residual_over_work"].abs().max()
             backstop = group["load_backstop_share"].abs().max() if "load_backstop_share" in group else np.nan
             line["largest |energy residual| / plate work [%]"] = 100 * energy
-            line["energy within 1 %"] = "yes" if energy < ENERGY_LIMIT else "no" if np.isfinite(energy) else ""
+            line[f"energy within {percent(ENERGY_LIMIT)}"] = "yes" if energy < ENERGY_LIMIT else "no" if np.isfinite(energy) else ""
             line["largest backstop share [%]"] = 100 * backstop
             out.append(line)
     return pd.DataFrame(out)
@@ -219,7 +236,7 @@ def bulk_modulus_note(table):
 
 
 def write_page(path, config, table, figure_files, compared=None, target="convergence", summary=None, anchors=None):
-    """summary: the target's cases, for the energy warning (report.energy_box); anchors: the analytic
+    """summary: the target's cases, for the energy warning (html_page.energy_box); anchors: the analytic
     anchors' table (anchors.anchor_table)."""
     here = pathlib.Path(path).parent
     parts = ["<h1>Convergence: how much of a curve is the particle count</h1>",
@@ -228,28 +245,25 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
              "h0 follows it at a fixed h0/dx), the time step, or sweeps a parameter (h0/dx, the fluid's bulk modulus "
              "K, the plate speed). Changes are relative to the previous case; the order p is "
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "
-             "Criteria: between the two finest levels the stresses at strains 0.05 and 0.10, the peak force and the "
-             "end-of-drying V/V0 change by less than 10 % and F / (p A_c) by less than 5 %; between the two time steps "
-             "the stresses by less than 3 %; every compression keeps its energy account within 1 % of the plate work. "
-             "The load partition (F / (p A_c), the fluid's and the backstop's shares) is explained in "
+             f"{criteria_text()} The load partition (F / (p A_c), the fluid's and the backstop's shares) is explained in "
              "docs/model.md §8.</p>"]
     if summary is not None:
-        parts.append(report.energy_box(summary))
-    parts.append("<h2>Verdicts</h2>" + report.frame_table(verdicts(config, table)))
+        parts.append(html_page.energy_box(summary))
+    parts.append("<h2>Verdicts</h2>" + html_page.frame_table(verdicts(config, table)))
     if anchors is not None and len(anchors):
         parts.append("<h2>Analytic anchors</h2><p>Results the model must meet that do not come from the model "
                      "(docs/model.md §9): the breathing mode of the closed cell against the lowest radial mode of a "
                      "compressible fluid sphere in an elastic shell (within 5 %); Young-Laplace, the pressure of a cell "
                      "at rest against 2T/R (within 2 %); the cell without contraction springs (k_wc = 0) pressed "
                      "between plates against the axisymmetric membrane solution for its own mesh (within 10 %).</p>"
-                     + report.frame_table(anchors.drop(columns=["case"])))
+                     + html_page.frame_table(anchors.drop(columns=["case"])))
     for study, rows in table.groupby("study", sort=False):
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(report.frame_table(readable(rows)))
+        parts.append(html_page.frame_table(readable(rows)))
         if rows["refined_axis"].iloc[0] == "K_MPa":
             parts += [f"<p>{html.escape(note)}</p>" for note in bulk_modulus_note(rows)]
     for study, rows in (compared or {}).items():
         parts.append(f"<h2>{html.escape(config['studies'][study].get('title', study))}</h2>")
-        parts.append(report.frame_table(rows.rename(columns=dict(METRICS))))
-    parts.append(report.figure_list(config, figure_files, here))
-    report.write_page(path, f"cellsim {target}", parts)
+        parts.append(html_page.frame_table(rows.rename(columns=dict(METRICS))))
+    parts.append(html_page.figure_list(config, figure_files, here))
+    html_page.write_page(path, f"cellsim {target}", parts)

@@ -7,7 +7,7 @@ import pathlib
 import numpy as np
 import pandas as pd
 
-from analysis import ensembles, report
+from analysis import ensembles, html_page
 from analysis.aggregate import rows_of
 
 
@@ -76,7 +76,7 @@ ENSEMBLE_TEXT = ("<p>Each member draws its bonds' G and t0 and its fluid's visco
 
 
 def table(frame):
-    return report.frame_table(frame) if len(frame) else "<p>(Its study is not in this run's config.)</p>"
+    return html_page.frame_table(frame) if len(frame) else "<p>(Its study is not in this run's config.)</p>"
 
 
 def write_page(path, config, frames, figure_files, summary):
@@ -87,5 +87,5 @@ def write_page(path, config, frames, figure_files, summary):
              "<h3>The paper's claims on the ensemble's mean</h3>", table(frames["ensemble_claims"]),
              "<h3>How the band grows with the spread of the properties (fresh cells)</h3>",
              table(frames["band_growth"]),
-             report.figure_list(config, figure_files, here)]
-    report.write_page(path, "cellsim extensions", parts)
+             html_page.figure_list(config, figure_files, here)]
+    html_page.write_page(path, "cellsim extensions", parts)

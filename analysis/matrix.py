@@ -26,6 +26,10 @@ import json
 import pathlib
 from dataclasses import dataclass, field
 
+import jsonschema
+
+from analysis.quantities import DRAWABLE, MODULI  # the solver's time series, those derived, the moduli
+
 
 class ConfigError(ValueError):
     """A config that passes the schema but is inconsistent (names the key)."""
@@ -164,7 +168,6 @@ def check(config, root="."):
         for ref, spec in entries.items():
             if not (pathlib.Path(root) / spec["file"]).is_file():
                 raise ConfigError(f"{section}.{ref}.file: no such file '{spec['file']}'")
-    from analysis.quantities import DRAWABLE, MODULI  # the solver's time series, those derived, the moduli
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
         for study in figure_studies(spec):
@@ -234,6 +237,12 @@ def case_schema():
     return json.loads(CASE_SCHEMA.read_text())
 
 
+def case_default(key):
+    """The solver's default of a case key ('section.key'), from its schema."""
+    section, name = key.split(".")
+    return case_schema()["properties"][section]["properties"][name]["default"]
+
+
 def with_defaults(case, schema):
     """The case with every key it leaves out that has a default set to that default (derived keys,
     which have none, stay out: the solver derives them)."""
@@ -247,7 +256,6 @@ def with_defaults(case, schema):
 def check_cases(config):
     """Every case the studies make must be a valid cellsim case (ranges of the solver's schema),
     so a bad study value stops the workflow before any job runs, naming study, axis and value."""
-    import jsonschema
     validator = jsonschema.Draft7Validator(case_schema())
     for case in expand(config).values():
         error = next(iter(sorted(validator.iter_errors(case.case), key=lambda e: list(e.path))), None)

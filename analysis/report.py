@@ -8,49 +8,9 @@ import pathlib
 import markdown
 
 from analysis import bounds, comparison
+from analysis.claims import METHOD
+from analysis.html_page import cell_text, energy_box, write_page
 from analysis.matrix import figure_cases, figure_studies
-
-
-STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
-         ".wide{overflow-x:auto}table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
-         "img{max-width:100%}figure{margin:2em 0}.agree td.verdict{color:green}"
-         ".disagree td.verdict{color:#b00}.not-run td.verdict,.not-reached td.verdict{color:grey}"
-         ".warning{border:2px solid #b00;background:#fee;padding:0.5em 1em;margin:1em 0}")
-
-
-def write_page(path, title, parts):
-    """An HTML page of the report: its parts (HTML strings) in order, with the report's style."""
-    pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>{html.escape(title)}"
-                                  f"</title><style>{STYLE}</style></head><body>{''.join(parts)}</body></html>\n")
-
-
-def figure_list(config, figure_files, here):
-    """'Figures' and each figure (PNG relative to the page's folder `here`) with its title as caption."""
-    parts = ["<h2>Figures</h2>"]
-    for fig, png in figure_files.items():
-        parts.append(f"<figure id='{fig}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{fig}'>"
-                     f"<figcaption><b>{fig}.</b> {html.escape(config['figures'][fig]['title'])}.</figcaption></figure>")
-    return "".join(parts)
-
-
-def cell_text(value):
-    """A table cell's text: numbers to 4 significant digits, whole numbers (counts) and numbers of
-    10 000 and more in full (a force of 10690 uN, not 1.069e+04), NaN as empty, names as they are."""
-    if isinstance(value, float):
-        if value != value:
-            return ""
-        in_full = (value.is_integer() or abs(value) >= 1e4) and abs(value) < 1e15
-        return f"{value:.0f}" if in_full else f"{value:.4g}"
-    return html.escape(str(value))
-
-
-def frame_table(frame):
-    """A pandas frame as an HTML table, headings from its columns; a table wider than the page scrolls in
-    its own box, not the page."""
-    head = "".join(f"<th>{html.escape(str(c))}</th>" for c in frame.columns)
-    body = "".join("<tr>" + "".join(f"<td>{cell_text(v)}</td>" for v in row) + "</tr>"
-                   for row in frame.itertuples(index=False))
-    return f"<div class='wide'><table><tr>{head}</tr>{body}</table></div>"
 
 
 def caption(config, fig, cases):
@@ -71,7 +31,6 @@ def caption(config, fig, cases):
 
 def claims_table(rows):
     """The claims with their curve-level verdicts, the old point values beside them, and the method."""
-    from analysis.claims import METHOD
     number = lambda v: "" if v != v else f"{v:.4g}"  # noqa: E731 (NaN: empty)
     out = [f"<p>{html.escape(METHOD)}</p>",
            "<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
@@ -137,28 +96,6 @@ def warnings_box(summary):
                 f"(compression.steps) before the end they were asked for; their curves end at the strain "
                 f"given.</summary>{items(capped)}</details>")
     return box
-
-
-ENERGY_TOLERANCE = 0.1  # |energy residual| over the plate work of a compression above which it is flagged
-
-
-def energy_box(summary):
-    """Compressions whose energy account does not close (docs/model.md §8): the residual is more than a tenth
-    of the plate work, so energy was made or lost by the numerics (at the default settings it is about 1 %).
-    A visible box, or nothing."""
-    column = "compression_energy_residual_over_work"
-    if column not in summary.columns:
-        return ""
-    flagged = summary[summary[column].abs() > ENERGY_TOLERANCE]
-    if flagged.empty:
-        return ""
-    items = "".join(f"<li><code>{html.escape(r['case'])}</code>: residual {100 * r[column]:+.0f} % of the plate work"
-                    f"</li>" for _, r in flagged.iterrows())
-    return (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} compressions do not conserve "
-            f"energy</b> (the residual of the energy account is more than {100 * ENERGY_TOLERANCE:.0f} % of the plate "
-            f"work): the numerics made or destroyed that energy, usually because the time step is too large for the "
-            f"case. Their curves are not physics where the residual grows (time series energy_residual_J); try half "
-            f"the time step.<ul>{items}</ul></div>")
 
 
 def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=()):

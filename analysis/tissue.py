@@ -8,7 +8,7 @@ import pathlib
 import numpy as np
 import pandas as pd
 
-from analysis import matrix, report
+from analysis import html_page, matrix
 from analysis.bounds import REAL_LP  # a closed cell's compression L_p; any other drains it
 from analysis.references import load as load_reference
 from analysis.results import open_result
@@ -47,7 +47,9 @@ def sides(row):
 
 def numerics(row):
     """The coupling and resolution a case ran with, in words (its single cell is the one alike)."""
-    return ("pressure coupling, h0/dx 1.2" if row["coupling.model"] == "pressure" else "paper's (LJ)")
+    if row["coupling.model"] != "pressure":
+        return "paper's (LJ)"
+    return f"pressure coupling, h0/dx {row['fluid.h_over_dx']:.2g}"  # the resolved case's ratio
 
 
 def single_cell_of(rows, row):
@@ -191,7 +193,7 @@ def write_page(path, config, frame, figure_files, target="tissue"):
              "(model.md §10c). The tissue's volume is the convex hull of its walls, its porosity the part of that hull "
              "outside every cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
     parts.append("<h2>Tissues against the single cell</h2>")
-    parts.append(report.frame_table(frame.drop(columns=["case"])))
+    parts.append(html_page.frame_table(frame.drop(columns=["case"])))
     moduli = modulus_table(frame)
     if len(moduli):
         parts.append("<h2>Apparent modulus at small strain</h2>")
@@ -202,7 +204,7 @@ def write_page(path, config, frame, figure_files, target="tissue"):
                      "strain). Fresh apple tissue: initial tangent moduli 0.81-0.93 MPa (Chakespari et al., "
                      "figure tis08 fits the reconstructed curves alike). Closed: compression L_p 1e-12; "
                      "drained: 1e-6 (docs/model-closures.md, the drained bound).</p>")
-        parts.append(report.frame_table(moduli))
+        parts.append(html_page.frame_table(moduli))
     references = sorted({n for f in matrix.target_figures(config, target)
                          for n in config["figures"][f].get("references", [])})
     compared = conjecture_table(frame, apple_stress_kPa(config, references))
@@ -212,6 +214,6 @@ def write_page(path, config, frame, figure_files, target="tissue"):
                  f"{', '.join(html.escape(config['references'][n]['label']) for n in references) or 'no reference'}). "
                  "What the numbers point to: docs/model-closures.md, 'The tissue study'.</p>")
     if len(compared):
-        parts.append(report.frame_table(compared))
-    parts.append(report.figure_list(config, figure_files, here))
-    report.write_page(path, f"cellsim {target}", parts)
+        parts.append(html_page.frame_table(compared))
+    parts.append(html_page.figure_list(config, figure_files, here))
+    html_page.write_page(path, f"cellsim {target}", parts)

@@ -240,7 +240,7 @@ def test_report_warns_of_every_case_whose_drying_hit_its_cap():
 
 
 def test_report_warns_of_every_compression_whose_energy_account_does_not_close():
-    from analysis.report import energy_box
+    from analysis.html_page import energy_box
     summary = pd.DataFrame({"case": ["A", "B", "C"], "compression_energy_residual_over_work": [0.01, 4.79, -0.06]})
     box = energy_box(summary)
     assert "1 of 3 compressions" in box and "<code>B</code>" in box and "+479 %" in box
@@ -418,7 +418,7 @@ def test_shrinkage_figure_draws_cells_tissues_and_reference_lines(config, root):
 
 
 def test_table_cells_print_counts_in_full_and_measures_to_four_digits():
-    from analysis.report import cell_text
+    from analysis.html_page import cell_text
     assert cell_text(13824.0) == "13824"  # a bond count, not 1.382e+04
     assert cell_text(10690.4) == "10690"  # a peak force in uN, not 1.069e+04
     assert cell_text(-12345.6) == "-12346"

@@ -1,5 +1,6 @@
 """The solver's source tree keeps the layers solver/README.md maps: each file includes only its own layer
 and the layers above it in the README's table, and every source file the docs name exists."""
+import ast
 import re
 
 LAYER_ROW = re.compile(r"^\| `(\w+)/` \|", flags=re.M)
@@ -54,3 +55,36 @@ def test_source_files_the_docs_name_exist(root):
             assert (src / name).exists(), f"{doc.relative_to(root)} names {name}, not in solver/src"
             found += 1
     assert found > 30
+
+
+def analysis_imports(root):
+    """{module: set of analysis modules it imports} for analysis/*.py, and every import statement found
+    below a module's top level as (module, line)."""
+    graph, nested = {}, []
+    for path in sorted((root / "analysis").glob("*.py")):
+        tree = ast.parse(path.read_text())
+        top = set(id(node) for node in tree.body)
+        graph[path.stem] = set()
+        for node in ast.walk(tree):
+            if not isinstance(node, (ast.Import, ast.ImportFrom)):
+                continue
+            if id(node) not in top:
+                nested.append((path.stem, node.lineno))
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
+                [f"{node.module}.{a.name}" if node.module == "analysis" else node.module for a in node.names]
+            graph[path.stem] |= {n.split(".")[1] for n in names if n.startswith("analysis.")}
+    return graph, nested
+
+
+def test_analysis_imports_at_the_top_of_each_module_and_in_no_circle(root):
+    graph, nested = analysis_imports(root)
+    assert len(graph) > 10 and sum(map(len, graph.values())) > 15, graph  # the graph was read
+    assert not nested, f"imports inside a function or block (an import circle hides there): {nested}"
+    for module in graph:  # depth-first from each module: does any path lead back to it?
+        seen, todo = set(), list(graph[module])
+        while todo:
+            other = todo.pop()
+            assert other != module, f"analysis/{module}.py imports itself through {sorted(seen)}"
+            if other not in seen:
+                seen.add(other)
+                todo.extend(graph.get(other, ()))
