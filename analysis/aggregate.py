@@ -1,5 +1,8 @@
 """Tidy tables from the runs: one row per (case, record), and one row per case with summary
 metrics. Every case parameter is a column ('cell.turgor_kPa', ...), and so is every axis."""
+import json
+import pathlib
+
 import numpy as np
 import pandas as pd
 
@@ -111,9 +114,11 @@ def load_partition(compression, window=LOAD_WINDOW):
             w["load_backstop_N"].sum() / force if "load_backstop_N" in w and force else np.nan)
 
 
-ENERGY_FLOWS = ("plate_work_J", "viscous_loss_J", "damping_loss_J", "mass_transfer_energy_J", "closure_energy_J",
-                "drive_energy_J", "density_diffusion_energy_J", "backstop_work_J", "volume_closure_energy_J",
-                "plastic_loss_J", "lamella_loss_J")
+# The energy account's terms, the solver's own table (`cellsim energy-terms`, kept in config/schema by
+# scripts/update-docs): the series of what flowed in or out, in the solver's order.
+ENERGY_TERMS = json.loads((pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" /
+                           "energy_terms.json").read_text())
+ENERGY_FLOWS = tuple(term["column"] for term in ENERGY_TERMS if term["role"] != "stored")
 
 
 def energy_account(drying, compression):

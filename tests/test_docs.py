@@ -28,6 +28,14 @@ def test_case_schema_file_matches_solver(cellsim, root):
     assert (root / "config" / "schema" / "case.schema.json").read_text() == solver, "run scripts/update-docs"
 
 
+def test_energy_terms_file_matches_solver(cellsim, root):
+    """The workflow's aggregation reads the energy account's terms from config/schema/energy_terms.json."""
+    solver = subprocess.run([cellsim, "energy-terms"], check=True, capture_output=True, text=True).stdout
+    assert (root / "config" / "schema" / "energy_terms.json").read_text() == solver, "run scripts/update-docs"
+    terms = json.loads(solver)
+    assert {t["role"] for t in terms} == {"stored", "flow", "loss"} and len(terms) > 15
+
+
 def test_case_reference_names_every_section_of_the_schema(cellsim, root):
     schema = json.loads(subprocess.run([cellsim, "schema"], check=True, capture_output=True, text=True).stdout)
     sections = {name for name, spec in schema["properties"].items() if spec.get("type") == "object"}

@@ -52,13 +52,13 @@ Pressed press(double closure_time_us) {
 
 TEST(VolumeClosure, HoldsTheFluidVolumeToTheEnclosedVolumeAndCountsItsEnergy) {
   const Pressed held = press(0.05), free = press(0.0);
-  ASSERT_GT(free.pressed.plate_work_J - free.dried.plate_work_J, 0.0);  // the plate pressed the cell
+  ASSERT_GT(free.pressed.energy[kPlateWork] - free.dried.energy[kPlateWork], 0.0);  // the plate pressed the cell
   const double drift_free = std::abs(free.pressed.fluid_volume_ratio / free.start_ratio - 1);
   const double drift_held = std::abs(held.pressed.fluid_volume_ratio / held.start_ratio - 1);
   EXPECT_GT(drift_free, 1e-4) << "the bookkeeping drifts without the closure (or this test no longer tests it)";
   EXPECT_LT(drift_held, 0.1 * drift_free);
-  EXPECT_EQ(free.pressed.volume_closure_energy_J, 0.0);
-  EXPECT_NE(held.pressed.volume_closure_energy_J, 0.0);
-  const double work = held.pressed.plate_work_J - held.dried.plate_work_J;
+  EXPECT_EQ(free.pressed.energy[kVolumeClosure], 0.0);
+  EXPECT_NE(held.pressed.energy[kVolumeClosure], 0.0);
+  const double work = held.pressed.energy[kPlateWork] - held.dried.energy[kPlateWork];
   EXPECT_LT(std::abs(held.pressed.energy_residual_J - held.dried.energy_residual_J), 0.01 * work);
 }

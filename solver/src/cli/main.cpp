@@ -13,6 +13,7 @@
 #include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 #include "io/case_schema.hpp"
+#include "io/energy_terms_json.hpp"
 #include "io/version.hpp"
 #include "parallel/threads.hpp"
 
@@ -29,6 +30,7 @@ const char* kUsage =
     "  cellsim params                                    the case keys (Markdown table)\n"
     "  cellsim schema                                    JSON Schema of the case file\n"
     "  cellsim outputs                                   the time series written (Markdown table)\n"
+    "  cellsim energy-terms                              the energy account's terms (JSON): column, role, sign\n"
     "  cellsim --help | --version\n"
     "\n"
     "--from continues from the last state in SAVED.h5, a run of the same case: the end of drying (a run\n"
@@ -149,6 +151,10 @@ int dispatch(int argc, char** argv) {
   }
   if (a.command == "outputs") {
     std::cout << cellsim::output_reference_markdown();
+    return 0;
+  }
+  if (a.command == "energy-terms") {
+    std::cout << cellsim::energy_terms_json();
     return 0;
   }
   if (a.command == "validate") {

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 
+#include "core/energy_terms.hpp"
 #include "core/periodic_box.hpp"
 
 namespace cellsim {
@@ -50,19 +51,11 @@ struct Plates {
 };
 
 // The energy account's running integrals since t = 0 (engine/energy_account.hpp), kept with the state so
-// that a continued run carries them. Each is the energy a non-conservative term put into the particles.
+// that a continued run carries them: for each integrated term of core/energy_terms.hpp, the energy it put
+// into the particles (a loss: the energy it took out, positive); zero for the other terms.
 struct EnergyFlows {
-  double initial_J = 0;        // stored energy at t = 0 (the cell at rest)
-  double plate_work_J = 0;     // work of the top plate on the wall (Eq 22, the plate moves)
-  double viscous_loss_J = 0;   // dissipated by Eq 4 (positive)
-  double damping_loss_J = 0;   // dissipated by Eq 16 (positive)
-  double mass_transfer_J = 0;  // carried across the wall by Eq 11's water (negative when water leaves)
-  double closure_J = 0;        // changed by the wall-pressure closure's mass scaling (drying only)
-  double drive_J = 0;          // put in by the drying ramp of P_T and L_ref (explicit time dependence)
-  double density_diffusion_J = 0;  // put into the internal energy by delta-SPH (fluid.density_diffusion)
-  double backstop_work_J = 0;  // done by the pressure coupling's backstop (coupling.backstop_range_over_dx)
-  double volume_closure_J = 0;  // changed by the volume closure's density scaling (compression only)
-  double plastic_loss_J = 0;    // dissipated by the wall's plastic flow (positive; wall_plasticity.hpp)
+  double initial_J = 0;  // stored energy at t = 0 (the cell at rest)
+  EnergyValues integral{};
 };
 
 struct State {

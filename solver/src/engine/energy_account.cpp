@@ -5,44 +5,52 @@
 
 namespace cellsim {
 
-StoredEnergy stored_energy(const State& s, const EnergyModel& model) {
-  StoredEnergy e;
+EnergyValues energy_terms(const State& s, const EnergyModel& model) {
+  EnergyValues e = s.energy.integral;  // the integrated terms; the others are set below
+  double kinetic_J = 0, internal_J = 0;
   const FluidParticles& f = s.fluid;
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    e.kinetic_J += 0.5 * f.m[i] * f.v.col(i).squaredNorm();
-    e.internal_J += f.m[i] * model.eos.internal_energy_J_kg(f.rho[i]);
+    kinetic_J += 0.5 * f.m[i] * f.v.col(i).squaredNorm();
+    internal_J += f.m[i] * model.eos.internal_energy_J_kg(f.rho[i]);
   }
-  e.kinetic_J += 0.5 * s.wall.mass_kg * s.wall.v.colwise().squaredNorm().sum();
+  e[kKinetic] = kinetic_J + 0.5 * s.wall.mass_kg * s.wall.v.colwise().squaredNorm().sum();
+  e[kInternal] = internal_J;
   const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp, s.bond_plastic_elongation_m);
-  e.wall_stiff_J = bonds.stiff_J;
-  e.wall_contraction_J = bonds.contraction_J;
-  e.wall_bending_J = model.bending.energy(s.wall.x);
+  e[kWallStiff] = bonds.stiff_J;
+  e[kWallContraction] = bonds.contraction_J;
+  e[kWallBending] = model.bending.energy(s.wall.x);
+  double coupling_J = 0;
   if (model.lj) {
     const PairList& pairs = model.fluid_wall;
     for (int i = 0; i < pairs.rows(); ++i)
       for (int q = pairs.offset[static_cast<std::size_t>(i)]; q < pairs.offset[static_cast<std::size_t>(i) + 1]; ++q)
-        e.coupling_J +=
+        coupling_J +=
             model.lj->potential_J((f.x.col(i) - s.wall.x.col(pairs.index[static_cast<std::size_t>(q)])).squaredNorm());
   }
-  e.plate_J = plate_energy_J(s.wall.x, model.plates, s.plates);
+  e[kCouplingPotential] = coupling_J;
+  e[kPlateSprings] = plate_energy_J(s.wall.x, model.plates, s.plates);
+  e[kContact] = e[kLamella] = e[kLamellaLoss] = 0;
   if (model.contact) {
     const CellContactEnergy between = cell_contact_energy(s.wall.x, *model.wall_wall, *model.lamella, *model.contact,
                                                           s.box, s.lamella_intact, s.lamella_peak_opening_m);
-    e.contact_J = between.contact_J;
-    e.lamella_J = between.lamella_J;
-    e.lamella_loss_J = between.lamella_dissipated_J;
+    e[kContact] = between.contact_J;
+    e[kLamella] = between.lamella_J;
+    e[kLamellaLoss] = between.lamella_dissipated_J;
   }
   return e;
 }
 
-void add_half_kick(const EnergyRates& rates, double half_dt, bool density_flows, EnergyFlows& flows) {
-  flows.plate_work_J += half_dt * rates.plate_W;
-  flows.viscous_loss_J += half_dt * rates.viscous_loss_W;
-  flows.damping_loss_J += half_dt * rates.damping_loss_W;
-  if (density_flows) flows.mass_transfer_J += half_dt * rates.mass_transfer_W;
-  flows.drive_J += half_dt * rates.drive_W;
-  if (density_flows) flows.density_diffusion_J += half_dt * rates.density_diffusion_W;
-  flows.backstop_work_J += half_dt * rates.backstop_W;
+double stored_energy_J(const EnergyValues& terms) {
+  double total = 0;
+  for (const EnergyTerm& term : kEnergyTerms)
+    if (term.role == EnergyRole::Stored) total += terms[term.id];
+  return total;
+}
+
+void add_half_kick(const EnergyValues& power_W, double half_dt, bool density_flows, EnergyFlows& flows) {
+  for (const EnergyTerm& term : kEnergyTerms)
+    if (term.source == EnergySource::Power || (density_flows && term.source == EnergySource::DensityPower))
+      flows.integral[term.id] += half_dt * power_W[term.id];
 }
 
 double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
@@ -82,11 +90,11 @@ double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double
   return turgor_rate_Pa_s * per_turgor + L_ref_shortening_rate_1_s * contraction_times_l0_N_m;
 }
 
-double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows) {
-  const double put_in = flows.plate_work_J - flows.viscous_loss_J - flows.damping_loss_J + flows.mass_transfer_J +
-                        flows.closure_J + flows.drive_J + flows.density_diffusion_J + flows.backstop_work_J +
-                        flows.volume_closure_J - flows.plastic_loss_J - now.lamella_loss_J;
-  return now.total_J() - flows.initial_J - put_in;
+double energy_residual_J(const EnergyValues& terms, double initial_J) {
+  double put_in = 0;
+  for (const EnergyTerm& term : kEnergyTerms)
+    if (term.role != EnergyRole::Stored) put_in += residual_sign(term.role) * terms[term.id];
+  return stored_energy_J(terms) - initial_J - put_in;
 }
 
 }  // namespace cellsim

@@ -19,25 +19,6 @@
 
 namespace cellsim {
 
-struct StoredEnergy {
-  double kinetic_J = 0;           // fluid and wall, sum of m v^2 / 2
-  double internal_J = 0;          // sum of m e(rho) over the fluid (eos.hpp)
-  double wall_stiff_J = 0;        // Eq 15's springs
-  double wall_contraction_J = 0;  // Eq 21's springs
-  double wall_bending_J = 0;      // Eq 20
-  double coupling_J = 0;          // the LJ potential of Eqs 12-13, 17-19 (0 for the pressure coupling)
-  double plate_J = 0;             // Eq 22's springs
-  double contact_J = 0;           // a tissue's wall contacts between cells (cell_contact.hpp)
-  double lamella_J = 0;           // its intact middle-lamella bonds (lamella_law.hpp)
-  double total_J() const {
-    return kinetic_J + internal_J + wall_stiff_J + wall_contraction_J + wall_bending_J + coupling_J + plate_J +
-           contact_J + lamella_J;
-  }
-  // Not stored, but like the stored energies a function of the state (each bond's largest opening): the
-  // energy the lamella's softening and breaking has taken since the tissue was built.
-  double lamella_loss_J = 0;
-};
-
 // What the stored energy depends on besides the state. lj: null for the pressure coupling, which
 // stores nothing of its own (it carries the fluid's pressure, whose energy is the internal energy).
 struct EnergyModel {
@@ -54,22 +35,18 @@ struct EnergyModel {
   const std::vector<LamellaBond>* lamella = nullptr;
 };
 
-StoredEnergy stored_energy(const State& s, const EnergyModel& model);
+// Every term of the account now (core/energy_terms.hpp): the stored energies and the losses that are a
+// function of the state (the lamella's damage) from the state; the running integrals from s.energy.
+EnergyValues energy_terms(const State& s, const EnergyModel& model);
 
-// The powers of the non-conservative terms at one force evaluation; each half kick integrates them over
-// its half step (so a step takes their trapezoidal mean).
-struct EnergyRates {
-  double plate_W = 0;          // F_top x plate speed: the top plate's work on the wall
-  double viscous_loss_W = 0;   // fluid_pairs.hpp
-  double damping_loss_W = 0;   // wall_bonds.hpp
-  double mass_transfer_W = 0;  // sum of dm/dt x carried energy (mass_transfer.hpp)
-  double drive_W = 0;          // dP_T/dt sum m de/dP_T - sum k_wc (l - L_ref) dL_ref/dt, during the drying ramp
-  double density_diffusion_W = 0;  // fluid_pairs.hpp
-  double backstop_W = 0;       // the pressure coupling's backstop on fluid and wall (pressure_coupling.hpp)
-};
-// density_flows: also the flows of the density and mass updates (Eq 11's water, delta-SPH), when the
-// kicks advance them (time.density_update = kick); with drift the density's own step counts them.
-void add_half_kick(const EnergyRates& rates, double half_dt, bool density_flows, EnergyFlows& flows);
+// The sum of the stored terms, in the table's order.
+double stored_energy_J(const EnergyValues& terms);
+
+// The powers (W) of the terms integrated over the half kicks (EnergySource::Power and DensityPower), at
+// one force evaluation; each half kick integrates them over its half step (so a step takes their
+// trapezoidal mean). density_flows: the DensityPower terms too (Eq 11's water, delta-SPH), when the
+// kicks advance the density (time.density_update = kick); with drift the density's own step counts them.
+void add_half_kick(const EnergyValues& power_W, double half_dt, bool density_flows, EnergyFlows& flows);
 
 // Sum over the fluid of dm/dt (v^2/2 + e + P/rho): the energy Eq 11's water brings in (threads: as the step's).
 double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
@@ -88,7 +65,8 @@ double density_scaling_energy_J(const FluidParticles& f, const EquationOfState& 
 double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double turgor_rate_Pa_s,
                      double contraction_times_l0_N_m, double L_ref_shortening_rate_1_s);
 
-// Stored energy now - at t = 0 - what the flows put in: zero for an exact integration of the model.
-double energy_residual_J(const StoredEnergy& now, const EnergyFlows& flows);
+// Stored energy now - at t = 0 (initial_J) - what the flows and losses put in, each by its sign in the
+// table: zero for an exact integration of the model.
+double energy_residual_J(const EnergyValues& terms, double initial_J);
 
 }  // namespace cellsim

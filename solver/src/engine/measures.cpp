@@ -53,10 +53,43 @@ void measure_cells(const State& s, const CellRanges& cells, const WallSurface& s
     r.porosity = 1.0 - surface.volume_m3 / r.tissue_volume_m3;
   }
 }
+
+// " + "-joined labels of the table's terms of this role (with their signs in the residual: " - " for a loss).
+std::string joined_labels(bool stored) {
+  std::string text;
+  for (const EnergyTerm& term : kEnergyTerms) {
+    if ((term.role == EnergyRole::Stored) != stored) continue;
+    text += text.empty() ? (term.role == EnergyRole::Loss ? "- " : "") : (term.role == EnergyRole::Loss ? " - " : " + ");
+    text += term.label;
+  }
+  return text;
 }
 
+// The energy account's series (docs/model.md §8), from the table of its terms (core/energy_terms.hpp):
+// the stored energies, their sum, what the other terms put in since t = 0, and the residual.
+void add_energy_quantities(std::vector<Quantity>& q) {
+  const auto add_terms = [&](bool stored) {
+    for (const EnergyTerm& term : kEnergyTerms)
+      if (term.column && (term.role == EnergyRole::Stored) == stored)
+        q.push_back({term.column, "J", term.definition, nullptr, static_cast<int>(term.id)});
+  };
+  add_terms(true);
+  q.push_back({"stored_energy_J", "J", "the stored energies' sum: " + joined_labels(true), &Record::stored_energy_J});
+  add_terms(false);
+  q.push_back({"wall_plastic_strain_mean", "1",
+               "mean over the wall bonds of the plastic strain delta_p / l0, the slider's elongation (0 if elastic)",
+               &Record::wall_plastic_strain_mean});
+  q.push_back({"wall_plastic_strain_max", "1", "largest plastic strain delta_p / l0 of a wall bond (0 if elastic)",
+               &Record::wall_plastic_strain_max});
+  q.push_back({"energy_residual_J", "J",
+               "stored energy - its value at t = 0 - (" + joined_labels(false) + "): the error of the energy account",
+               &Record::energy_residual_J});
+}
+}  // namespace
+
 const std::vector<Quantity>& quantities() {
-  static const std::vector<Quantity> q = {
+  static const std::vector<Quantity> all = [] {
+    std::vector<Quantity> q = {
       {"time_s", "s", "simulated time since the start of drying", &Record::time_s},
       {"stage", "1", "0 drying, 1 compression", &Record::stage},
       {"step", "1", "time steps done since the start of drying", &Record::step},
@@ -129,60 +162,11 @@ const std::vector<Quantity>& quantities() {
        &Record::lateral_stress_Pa},
       {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
        &Record::porosity},
-      // The energy account (docs/model.md): stored energies, then what the other terms put in since t = 0.
-      {"internal_energy_J", "J", "fluid internal energy, sum of m e(rho), de = P / rho^2 drho with Eq 7's P",
-       &Record::internal_energy_J},
-      {"wall_stiff_energy_J", "J", "energy of Eq 15's springs, (G t0 l0^2 / sqrt 3)((lambda^2 - 1)/2 - ln lambda) per bond",
-       &Record::wall_stiff_energy_J},
-      {"wall_contraction_energy_J", "J", "energy of Eq 21's springs, k_wc (l - L_ref)^2 / 2 per bond",
-       &Record::wall_contraction_energy_J},
-      {"wall_bending_energy_J", "J", "Eq 20's bending energy E_b", &Record::wall_bending_energy_J},
-      {"coupling_energy_J", "J", "potential of the LJ wall-fluid forces, zero at r_c (0 for the pressure coupling)",
-       &Record::coupling_energy_J},
-      {"plate_energy_J", "J", "energy of Eq 22's plate springs, k_pw overlap^2 / 2", &Record::plate_energy_J},
-      {"contact_energy_J", "J", "a tissue's wall contacts between cells, k_c (g - r)^2 / 2 per pair closer than g",
-       &Record::contact_energy_J},
-      {"lamella_energy_J", "J", "energy its intact middle-lamella bonds store (F delta / 2 on the bond's branch)",
-       &Record::lamella_energy_J},
-      {"stored_energy_J", "J",
-       "kinetic + internal + wall (stiff, contraction, bending) + coupling + plate + contact + lamella energies",
-       &Record::stored_energy_J},
-      {"plate_work_J", "J", "work of the top plate on the wall since t = 0, integral of F_top x plate speed",
-       &Record::plate_work_J},
-      {"viscous_loss_J", "J", "energy dissipated by the viscous forces (Eq 4) since t = 0", &Record::viscous_loss_J},
-      {"damping_loss_J", "J", "energy dissipated by the wall damping (Eq 16) since t = 0", &Record::damping_loss_J},
-      {"mass_transfer_energy_J", "J",
-       "energy Eq 11's water brought in since t = 0, integral of dm/dt (v^2/2 + e + P/rho) (negative: it left)",
-       &Record::mass_transfer_energy_J},
-      {"closure_energy_J", "J", "energy the wall-pressure closure's mass scaling added since t = 0 (drying only)",
-       &Record::closure_energy_J},
-      {"drive_energy_J", "J", "energy the drying ramp of P_T and L_ref added at fixed particles since t = 0",
-       &Record::drive_energy_J},
-      {"density_diffusion_energy_J", "J",
-       "internal energy the delta-SPH density diffusion (fluid.density_diffusion) added since t = 0",
-       &Record::density_diffusion_energy_J},
-      {"backstop_work_J", "J", "work of the pressure coupling's backstop on fluid and wall since t = 0 (0 for LJ)",
-       &Record::backstop_work_J},
-      {"volume_closure_energy_J", "J",
-       "internal energy the volume closure's density scaling added since t = 0 (compression only)",
-       &Record::volume_closure_energy_J},
-      {"plastic_loss_J", "J", "energy the wall's plastic flow dissipated since t = 0 (0 for an elastic wall)",
-       &Record::plastic_loss_J},
-      {"lamella_loss_J", "J",
-       "energy the middle lamella's softening and breaking took since t = 0 (its bonds' largest openings; G_f a_w "
-       "for each bond separated)",
-       &Record::lamella_loss_J},
-      {"wall_plastic_strain_mean", "1",
-       "mean over the wall bonds of the plastic strain delta_p / l0, the slider's elongation (0 if elastic)",
-       &Record::wall_plastic_strain_mean},
-      {"wall_plastic_strain_max", "1", "largest plastic strain delta_p / l0 of a wall bond (0 if elastic)",
-       &Record::wall_plastic_strain_max},
-      {"energy_residual_J", "J",
-       "stored energy - its value at t = 0 - (plate work - losses + mass transfer + closure + drive + density "
-       "diffusion + backstop work + volume closure - plastic loss - lamella loss): the error of the energy account",
-       &Record::energy_residual_J},
-  };
-  return q;
+    };
+    add_energy_quantities(q);
+    return q;
+  }();
+  return all;
 }
 
 const std::vector<CellQuantity>& cell_quantities() {
@@ -209,28 +193,10 @@ const std::vector<CellQuantity>& layer_quantities() {
 
 double cell_height_m(const Eigen::Matrix3Xd& wall_x) { return wall_x.row(2).maxCoeff() - wall_x.row(2).minCoeff(); }
 
-void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Record& r) {
-  r.internal_energy_J = stored.internal_J;
-  r.wall_stiff_energy_J = stored.wall_stiff_J;
-  r.wall_contraction_energy_J = stored.wall_contraction_J;
-  r.wall_bending_energy_J = stored.wall_bending_J;
-  r.coupling_energy_J = stored.coupling_J;
-  r.plate_energy_J = stored.plate_J;
-  r.contact_energy_J = stored.contact_J;
-  r.lamella_energy_J = stored.lamella_J;
-  r.lamella_loss_J = stored.lamella_loss_J;
-  r.stored_energy_J = stored.total_J();
-  r.plate_work_J = flows.plate_work_J;
-  r.viscous_loss_J = flows.viscous_loss_J;
-  r.damping_loss_J = flows.damping_loss_J;
-  r.mass_transfer_energy_J = flows.mass_transfer_J;
-  r.closure_energy_J = flows.closure_J;
-  r.drive_energy_J = flows.drive_J;
-  r.density_diffusion_energy_J = flows.density_diffusion_J;
-  r.backstop_work_J = flows.backstop_work_J;
-  r.volume_closure_energy_J = flows.volume_closure_J;
-  r.plastic_loss_J = flows.plastic_loss_J;
-  r.energy_residual_J = energy_residual_J(stored, flows);
+void add_energy_account(const EnergyValues& terms, double initial_J, Record& r) {
+  r.energy = terms;
+  r.stored_energy_J = stored_energy_J(terms);
+  r.energy_residual_J = energy_residual_J(terms, initial_J);
 }
 
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,

@@ -29,13 +29,10 @@ struct Record {
   double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
   double gauge_strain;  // the interior layers' strain (strain_gauge.hpp)
   double period_x_m, period_y_m, lateral_stress_Pa;  // a periodic slab's (model.md §10b)
-  // The energy account (energy_account.hpp): stored energies, the flows since t = 0, the residual.
-  double internal_energy_J, wall_stiff_energy_J, wall_contraction_energy_J, wall_bending_energy_J;
-  double coupling_energy_J, plate_energy_J, contact_energy_J, lamella_energy_J, stored_energy_J;
-  double plate_work_J, viscous_loss_J, damping_loss_J, mass_transfer_energy_J, closure_energy_J, drive_energy_J;
-  double density_diffusion_energy_J, backstop_work_J, volume_closure_energy_J, plastic_loss_J, lamella_loss_J;
+  // The energy account (energy_account.hpp): each term of core/energy_terms.hpp, their stored sum, the residual.
+  EnergyValues energy;
+  double stored_energy_J, energy_residual_J;
   double wall_plastic_strain_mean, wall_plastic_strain_max;  // delta_p / l0 over the bonds (wall_plasticity.hpp)
-  double energy_residual_J;
   // Each cell's (model.md §10), in cell order.
   std::vector<double> cell_volume_m3, cell_mean_pressure_Pa, cell_fluid_mass_kg, cell_centroid_z_m, cell_wall_height_m;
   // Each layer's (model.md §10c), from the bottom.
@@ -46,7 +43,10 @@ struct Quantity {
   std::string name;  // dataset name under /timeseries
   std::string unit;
   std::string definition;
-  double Record::*member;
+  double Record::*member = nullptr;  // where the record holds it; null for a term of the energy account,
+  int energy_term = -1;             // which sits at this index of Record::energy
+  double value(const Record& r) const { return member ? r.*member : r.energy[static_cast<std::size_t>(energy_term)]; }
+  double& value(Record& r) const { return member ? r.*member : r.energy[static_cast<std::size_t>(energy_term)]; }
 };
 const std::vector<Quantity>& quantities();
 
@@ -72,8 +72,8 @@ inline double nominal_strain(double contact_height_m, double height_m) {
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
                const Params& p, const EquationOfState& eos, const LoadPartition& load);
 
-// Fills in r's energy account from the stored energy now and the flows since t = 0.
-void add_energy_account(const StoredEnergy& stored, const EnergyFlows& flows, Record& r);
+// Fills in r's energy account from its terms now (energy_account.hpp) and the stored energy at t = 0.
+void add_energy_account(const EnergyValues& terms, double initial_J, Record& r);
 
 std::string output_reference_markdown();
 

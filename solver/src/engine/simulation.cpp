@@ -251,12 +251,12 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
 
 void Simulation::start_energy_account() {
   s_.energy = EnergyFlows{};
-  s_.energy.initial_J = stored_energy_now().total_J();
+  s_.energy.initial_J = stored_energy_J(energy_terms_now());
 }
 
-StoredEnergy Simulation::stored_energy_now() const {
+EnergyValues Simulation::energy_terms_now() const {
   const bool tissue = cells_.count() > 1;
-  return stored_energy(s_, {mesh_, bond_law_, contraction_ramp(), bending_,
+  return energy_terms(s_, {mesh_, bond_law_, contraction_ramp(), bending_,
                             p_.coupling_model == kPressure ? nullptr : &lj_, neighbours_.fluid_wall(), plate_law_, eos(),
                             tissue ? &contact_law_ : nullptr, &neighbours_.wall_wall(), &lamella_});
 }
@@ -361,8 +361,8 @@ void Simulation::advance_density(double dt) {
     add_pressure_coupling_density_rates(s_.fluid, s_.wall, neighbours_.fluid_wall(), pressure_coupling_scratch_,
                                         threads_, continuity_.drho_dt);
   }
-  s_.energy.mass_transfer_J += dt * energy_rates_.mass_transfer_W;
-  s_.energy.density_diffusion_J += dt * continuity_.density_diffusion_W;
+  s_.energy.integral[kMassTransfer] += dt * energy_power_W_[kMassTransfer];
+  s_.energy.integral[kDensityDiffusion] += dt * continuity_.density_diffusion_W;
   for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
     drift_density(dt, continuity_.drho_dt, dm_dt_, begin, end, s_.fluid);
   });
@@ -375,8 +375,8 @@ void Simulation::fluid_terms() {
   fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, viscosity(), threads_, fluid_,
                    p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(),
                    drift_density_ ? PairTerms::Forces : PairTerms::All);
-  energy_rates_.viscous_loss_W = fluid_.viscous_loss_W;
-  energy_rates_.density_diffusion_W = fluid_.density_diffusion_W;
+  energy_power_W_[kViscousLoss] = fluid_.viscous_loss_W;
+  energy_power_W_[kDensityDiffusion] = fluid_.density_diffusion_W;
   timer_.lap(Phase::FluidPairs);
 }
 
@@ -388,7 +388,7 @@ void Simulation::mass_transfer() {
     mass_rates(s_.fluid, fluid_.pressure, surface_.cell_area_m2[c], static_cast<int>(cells_.fluid_count(c)),
                Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_, fluid_.drho_dt);
   });
-  energy_rates_.mass_transfer_W = mass_transfer_power_W(s_.fluid, dm_dt_, eos(), threads_);
+  energy_power_W_[kMassTransfer] = mass_transfer_power_W(s_.fluid, dm_dt_, eos(), threads_);
 }
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
@@ -396,16 +396,16 @@ void Simulation::wall_terms() {
   const BondSums bonds =
       add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, s_.bond_plastic_elongation_m, wall_force_,
                       bond_scratch_);
-  s_.energy.plastic_loss_J += bonds.plastic_loss_J;  // at fixed positions: a jump, not a rate
+  s_.energy.integral[kPlasticLoss] += bonds.plastic_loss_J;  // at fixed positions: a jump, not a rate
   s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
-  energy_rates_.damping_loss_W = bonds.damping_loss_W;
+  energy_power_W_[kDampingLoss] = bonds.damping_loss_W;
   // The drying ramp moves P_T and L_ref (drying.hpp): the stored energy changes at fixed particles.
   const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
   const double drying_share = (1.0 - p_.dryness) * ramp_rate;  // d/dt of (1 - X) ramp
-  energy_rates_.drive_W = ramp_rate == 0 ? 0.0
-                                         : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * drying_share,
-                                                         bonds.contraction_times_l0_N_m,
-                                                         p_.contraction_ratio * drying_share);
+  energy_power_W_[kDrive] = ramp_rate == 0 ? 0.0
+                                           : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * drying_share,
+                                                           bonds.contraction_times_l0_N_m,
+                                                           p_.contraction_ratio * drying_share);
   timer_.lap(Phase::WallBonds);
   bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
   timer_.lap(Phase::Bending);
@@ -445,7 +445,7 @@ PressureCouplingLaw Simulation::pressure_coupling_law() const {
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 // weights_fresh: advance_density has weighed the pressure coupling's pairs at these positions.
 void Simulation::wall_fluid_terms(bool weights_fresh) {
-  energy_rates_.backstop_W = 0;
+  energy_power_W_[kBackstopWork] = 0;
   if (p_.coupling_model == kPressure) {
     const PairList& pairs = neighbours_.fluid_wall();
     if (!weights_fresh) {
@@ -456,7 +456,7 @@ void Simulation::wall_fluid_terms(bool weights_fresh) {
         add_pressure_coupling_density_rates(s_.fluid, s_.wall, pairs, pressure_coupling_scratch_, threads_,
                                             fluid_.drho_dt);
     }
-    energy_rates_.backstop_W =
+    energy_power_W_[kBackstopWork] =
         pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, pairs, threads_, pressure_coupling_scratch_,
                                  fluid_.force, coupling_on_wall_, backstop_on_wall_);
   } else {
@@ -485,16 +485,16 @@ std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
 // Eq 22 during compression; the first contact of the top plate starts the plate strain.
 void Simulation::plate_terms() {
   Plates& plates = s_.plates;
-  energy_rates_.plate_W = 0;
+  energy_power_W_[kPlateWork] = 0;
   if (!plates.active) return;
   add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
   // The wall pushes up; the plate moves down (negative speed while it unloads).
-  energy_rates_.plate_W = plates.force_top_N * top_plate_speed_m_s(plates, plate_motion_);
+  energy_power_W_[kPlateWork] = plates.force_top_N * top_plate_speed_m_s(plates, plate_motion_);
   if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
 }
 
 void Simulation::kick(double half_dt) {
-  add_half_kick(energy_rates_, half_dt, !drift_density_, s_.energy);
+  add_half_kick(energy_power_W_, half_dt, !drift_density_, s_.energy);
   kick_factor_.resize(s_.fluid.size());
   for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
     kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, !drift_density_, begin, end, kick_factor_, s_.fluid);
@@ -533,7 +533,7 @@ void Simulation::apply_pressure_closure() {
   if (!any) return;
   const EquationOfState state_eos = eos();
   for (int c = 0; c < cells_.count(); ++c)
-    s_.energy.closure_J += mass_scaling_energy_J(s_.fluid, state_eos, factor[c], cells_.fluid[c], cells_.fluid[c + 1]);
+    s_.energy.integral[kPressureClosure] += mass_scaling_energy_J(s_.fluid, state_eos, factor[c], cells_.fluid[c], cells_.fluid[c + 1]);
   for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
     scale(factor[c], begin, end, s_.fluid.m);
   });
@@ -555,7 +555,7 @@ void Simulation::apply_volume_closure() {
   const EquationOfState state_eos = eos();
   for (int c = 0; c < cells_.count(); ++c) {
     const double factor = volume_closure_factor(ratio[c], s_.start_volume_ratio[c], p_.dt_s, *p_.volume_closure_time_s);
-    s_.energy.volume_closure_J += density_scaling_energy_J(s_.fluid, state_eos, factor, cells_.fluid[c],
+    s_.energy.integral[kVolumeClosure] += density_scaling_energy_J(s_.fluid, state_eos, factor, cells_.fluid[c],
                                                            cells_.fluid[c + 1]);
     s_.fluid.rho.segment(cells_.fluid[c], cells_.fluid_count(c)) *= factor;
   }
@@ -763,7 +763,7 @@ Record Simulation::record() const {
   const LoadPartition load =
       top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, backstop_on_wall_, plate_law_, s_.plates);
   Record r = measure(s_, mesh_, cells_, surface_, p_, eos(), load);
-  add_energy_account(stored_energy_now(), s_.energy, r);
+  add_energy_account(energy_terms_now(), s_.energy.initial_J, r);
   return r;
 }
 

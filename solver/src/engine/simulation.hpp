@@ -116,7 +116,7 @@ class Simulation {
   void check_state() const;
   void check_time_step() const;
   void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference
-  StoredEnergy stored_energy_now() const;
+  EnergyValues energy_terms_now() const;
   double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
   std::string where() const;
 
@@ -144,7 +144,7 @@ class Simulation {
   bool drift_density_;
   Eigen::Matrix3Xd wall_force_, coupling_on_wall_, backstop_on_wall_;
   Eigen::VectorXd dm_dt_;
-  EnergyRates energy_rates_;  // of the non-conservative terms, at the current positions
+  EnergyValues energy_power_W_{};  // of the terms integrated over the kicks, at the current positions
   Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation
   BondScratch bond_scratch_;
   WallFluidScratch lj_scratch_;

@@ -142,7 +142,7 @@ void ResultFile::write_timeseries(const std::vector<Record>& records) {
   for (const auto& q : quantities()) {
     std::vector<double> column;
     column.reserve(records.size());
-    for (const auto& r : records) column.push_back(r.*q.member);
+    for (const auto& r : records) column.push_back(q.value(r));
     h5::write(g.id(), q.name, column, {column.size()});
     h5::set_dataset_attr(g.id(), q.name, "unit", q.unit);
     h5::set_dataset_attr(g.id(), q.name, "definition", q.definition);

@@ -23,21 +23,6 @@ constexpr PlateField kPlateFields[] = {
     {"plate_gauge_length_m", &Plates::gauge_length_m},
 };
 
-// The energy account's running integrals (state.hpp), stored as attributes under these names.
-struct EnergyField {
-  const char* name;
-  double EnergyFlows::*member;
-};
-constexpr EnergyField kEnergyFields[] = {
-    {"energy_initial_J", &EnergyFlows::initial_J},           {"energy_plate_work_J", &EnergyFlows::plate_work_J},
-    {"energy_viscous_loss_J", &EnergyFlows::viscous_loss_J}, {"energy_damping_loss_J", &EnergyFlows::damping_loss_J},
-    {"energy_mass_transfer_J", &EnergyFlows::mass_transfer_J}, {"energy_closure_J", &EnergyFlows::closure_J},
-    {"energy_drive_J", &EnergyFlows::drive_J},     {"energy_density_diffusion_J", &EnergyFlows::density_diffusion_J},
-    {"energy_backstop_work_J", &EnergyFlows::backstop_work_J},
-    {"energy_volume_closure_J", &EnergyFlows::volume_closure_J},
-    {"energy_plastic_loss_J", &EnergyFlows::plastic_loss_J},
-};
-
 }  // namespace
 
 void write_run_summary(hid_t parent, const DryingSummary& d, const CompressionSummary& c) {  // drying: read_saved_run
@@ -69,7 +54,10 @@ void write_state(hid_t parent, const State& s) {
   h5::set_attr(g.id(), "box_length_x_m", s.box.length_x_m);
   h5::set_attr(g.id(), "box_length_y_m", s.box.length_y_m);
   for (const auto& field : kPlateFields) h5::set_attr(g.id(), field.name, s.plates.*field.member);
-  for (const auto& field : kEnergyFields) h5::set_attr(g.id(), field.name, s.energy.*field.member);
+  // The energy account's running integrals (state.hpp), each under its term's state key.
+  h5::set_attr(g.id(), "energy_initial_J", s.energy.initial_J);
+  for (const EnergyTerm& term : kEnergyTerms)
+    if (integrated(term)) h5::set_attr(g.id(), term.state_key, s.energy.integral[term.id]);
   h5::write_points(g.id(), "wall_positions", s.wall.x);
   h5::write_points(g.id(), "wall_velocities", s.wall.v);
   h5::write_points(g.id(), "fluid_positions", s.fluid.x);
@@ -122,8 +110,12 @@ SavedRun read_saved_run(const std::string& path) {
     }
     for (const auto& field : kPlateFields)  // a field added since the file was written: none
       s.plates.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : std::nan("");
-    for (const auto& field : kEnergyFields)  // a flow added since the file was written started at 0
-      s.energy.*field.member = h5::has_attr(g.id(), field.name) ? h5::get_attr_double(g.id(), field.name) : 0.0;
+    const auto energy = [&](const char* key) {  // a term added since the file was written started at 0
+      return h5::has_attr(g.id(), key) ? h5::get_attr_double(g.id(), key) : 0.0;
+    };
+    s.energy.initial_J = energy("energy_initial_J");
+    for (const EnergyTerm& term : kEnergyTerms)
+      if (integrated(term)) s.energy.integral[term.id] = energy(term.state_key);
     if (h5::exists(g.id(), "start_layer_height"))
       s.plates.start_layer_height_m = h5::read_doubles(g.id(), "start_layer_height");
     if (h5::exists(g.id(), "bond_plastic_elongation"))
@@ -147,7 +139,7 @@ SavedRun read_saved_run(const std::string& path) {
       const auto column = h5::read_doubles(ts.id(), q.name);
       if (run.records.empty()) run.records.resize(column.size());
       if (column.size() != run.records.size()) throw std::runtime_error("time series of unequal length");
-      for (std::size_t r = 0; r < column.size(); ++r) run.records[r].*q.member = column[r];
+      for (std::size_t r = 0; r < column.size(); ++r) q.value(run.records[r]) = column[r];
     }
     for (const auto& [group_name, list] : {std::pair{"cells", &cell_quantities()}, std::pair{"layers", &layer_quantities()}}) {
       if (!h5::exists(file.id(), group_name)) continue;  // written before the layers were
