@@ -8,6 +8,7 @@
 #include "core/errors.hpp"
 #include "geometry/containment.hpp"
 #include "engine/periodic_slab.hpp"
+#include "engine/step_checks.hpp"
 #include "engine/strain_gauge.hpp"
 #include "geometry/hull.hpp"
 #include "parallel/cell_blocks.hpp"
@@ -26,10 +27,6 @@ namespace {
 
 // Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
 constexpr double kSkinOverH0 = 0.15;
-
-// A wall particle of a tissue faces at most about this many particles of a neighbour's wall within the
-// wall gap (the layers are one gap apart, their particles about one gap apart within each layer).
-constexpr double kContactPartners = 3;
 
 // The middle-lamella law from the case (lamella_law.hpp). A fracture energy too small to reach past
 // the elastic limit (G_f < F_max delta_0 / (2 a_w)) would soften over a negative distance: refused.
@@ -54,34 +51,6 @@ LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
 PropertyFactors property_factors(const Params& p, const Tissue& tissue) {
   const HeterogeneityLaw law{p.heterogeneity_seed, p.G_cv, p.thickness_cv, p.viscosity_cv, p.correlation_length_m};
   return draw_property_factors(law, tissue.wall_x, tissue.mesh, tissue.cells.cell_of_wall(), tissue.cells.count());
-}
-
-// Stable leapfrog needs dt < 2 / omega_max; omega_max^2 <= 2 max_k (sum of spring constants at k) / m.
-double wall_spring_limit(const WallMesh& mesh, const BondLaw& bonds, const std::vector<LamellaBond>& lamella,
-                         const Params& p, double wall_mass, long n_wall) {
-  const double contact = lamella.empty() ? 0.0 : kContactPartners * p.contact_stiffness_N_m;
-  std::vector<double> k_sum(static_cast<std::size_t>(n_wall), contact);
-  for (std::size_t i = 0; i < mesh.bonds.size(); ++i) {
-    const auto& b = mesh.bonds[i];
-    const double k_bond = p.contraction_stiffness_N_m + 2.0 * bonds.G_t_N_m[i] / std::sqrt(3.0);
-    k_sum[static_cast<std::size_t>(b[0])] += k_bond;
-    k_sum[static_cast<std::size_t>(b[1])] += k_bond;
-  }
-  for (const auto& b : lamella) {
-    k_sum[static_cast<std::size_t>(b.a)] += p.lamella_stiffness_N_m;
-    k_sum[static_cast<std::size_t>(b.b)] += p.lamella_stiffness_N_m;
-  }
-  double k_max = p.plate_stiffness_N_m;
-  for (double k : k_sum) k_max = std::max(k_max, k + p.plate_stiffness_N_m);
-  return 2.0 / std::sqrt(2.0 * k_max / wall_mass);
-}
-
-// The state checks run on every step, so the common case is one packed pass per array; the particle
-// at fault is looked up only on failure. a - a is 0 for a finite entry and NaN otherwise, so the sum
-// of a - a is exactly 0 iff every entry is finite (and cannot overflow, unlike the sum of a).
-template <class Derived>
-bool all_finite(const Eigen::DenseBase<Derived>& a) {
-  return (a.derived().array() - a.derived().array()).sum() == 0.0;
 }
 
 // The per-particle loops of a step, for particles [begin, end) (one block of for_blocks). Functions
@@ -145,44 +114,6 @@ double drift_columns(double dt, const Eigen::Matrix3Xd& v, Eigen::Index begin, E
   return v2;
 }
 
-// The fastest fluid particle and the one with the largest acceleration (squared), for the CFL limits.
-struct Fastest {
-  double v2 = 0, a2 = 0;
-  Eigen::Index i_v = 0, i_a = 0;
-  // Folds a later block in: the first particle wins a tie, as in one pass.
-  Fastest faster(const Fastest& later) const {
-    Fastest f = *this;
-    if (later.v2 > f.v2) f.v2 = later.v2, f.i_v = later.i_v;
-    if (later.a2 > f.a2) f.a2 = later.a2, f.i_a = later.i_a;
-    return f;
-  }
-};
-
-Fastest fastest_fluid(const FluidParticles& f, const Eigen::Matrix3Xd& force, Eigen::Index begin, Eigen::Index end) {
-  Fastest r;
-  r.i_v = r.i_a = begin;
-  for (Eigen::Index i = begin; i < end; ++i) {
-    const double v2 = f.v.col(i).squaredNorm();
-    const double a2 = force.col(i).squaredNorm() / (f.m[i] * f.m[i]);
-    if (v2 > r.v2) r.v2 = v2, r.i_v = i;
-    if (a2 > r.a2) r.a2 = a2, r.i_a = i;
-  }
-  return r;
-}
-
-// True if every position, velocity, density and mass of particles [begin, end) is finite, and every
-// density and mass positive (one packed pass per array: see all_finite).
-bool fluid_is_sound(const FluidParticles& f, Eigen::Index begin, Eigen::Index end) {
-  const Eigen::Index count = end - begin;
-  return all_finite(f.x.middleCols(begin, count)) && all_finite(f.v.middleCols(begin, count)) &&
-         all_finite(f.rho.segment(begin, count)) && all_finite(f.m.segment(begin, count)) &&
-         f.rho.segment(begin, count).minCoeff() > 0 && f.m.segment(begin, count).minCoeff() > 0;
-}
-
-bool wall_is_finite(const WallParticles& w, Eigen::Index begin, Eigen::Index end) {
-  return all_finite(w.x.middleCols(begin, end - begin)) && all_finite(w.v.middleCols(begin, end - begin));
-}
-
 // Adds the coupling's forces on wall particles [begin, end) to their forces, and returns the sum of
 // their push along their unit normals (packed norms and divisions), for the wall pressure.
 double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& vertex_normal, Eigen::Index begin,
@@ -236,11 +167,12 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = s_.fluid.m.sum();
   s_.plates.first_contact_top_z_m = std::nan("");
-  wall_spring_dt_limit_s_ = wall_spring_limit(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
-  if (p_.dt_s > wall_spring_dt_limit_s_) {  // known before the first step: bad input, not a blow-up
+  const double wall_limit_s =
+      wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
+  if (p_.dt_s > wall_limit_s) {  // known before the first step: bad input, not a blow-up
     std::ostringstream msg;
     msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
-        << wall_spring_dt_limit_s_ * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
+        << wall_limit_s * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
@@ -581,64 +513,17 @@ std::string Simulation::where() const {
 }
 
 void Simulation::check_state() const {
-  const auto both = [](bool a, bool b) { return a && b; };
-  const bool fluid_sound = reduce_blocks<bool>(
-      threads_, s_.fluid.size(), [&](Eigen::Index b, Eigen::Index e) { return fluid_is_sound(s_.fluid, b, e); }, both);
-  const bool wall_finite = reduce_blocks<bool>(
-      threads_, s_.wall.size(), [&](Eigen::Index b, Eigen::Index e) { return wall_is_finite(s_.wall, b, e); }, both);
-  if (fluid_sound && wall_finite) return;
-  // Something is wrong: find the first particle at fault, in the order of the quantities.
-  const auto report = [&](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) {
-    for (Eigen::Index i = 0; i < m.cols(); ++i)
-      if (!m.col(i).allFinite())
-        throw NumericalFailure(where() + ": " + kind + " particle " + std::to_string(i) + " has a non-finite " +
-                               quantity);
-  };
-  report("fluid", s_.fluid.x, "position");
-  report("fluid", s_.fluid.v, "velocity");
-  report("wall", s_.wall.x, "position");
-  report("wall", s_.wall.v, "velocity");
-  const auto& f = s_.fluid;
-  for (Eigen::Index i = 0; i < f.size(); ++i)
-    if (!std::isfinite(f.rho[i]) || !(f.rho[i] > 0) || !std::isfinite(f.m[i]) || !(f.m[i] > 0)) {
-      std::ostringstream msg;
-      msg << where() << ": fluid particle " << i << " has density " << f.rho[i] << " kg/m^3 and mass " << f.m[i]
-          << " kg (both must be positive and finite)";
-      throw NumericalFailure(msg.str());
-    }
+  const std::string unsound = unsound_particle(s_, threads_);
+  if (!unsound.empty()) throw NumericalFailure(where() + ": " + unsound);
 }
 
-// model.md §7: dt must stay under the CFL limits (the constant wall-spring limit is checked once,
-// in the constructor). Squared speeds and accelerations are compared (one square root each), and a
-// message is composed only on failure.
+// model.md §7: dt must stay under the CFL limits (the constant wall-spring limit is checked once, in the
+// constructor).
 void Simulation::check_time_step() const {
-  const double h = s_.smoothing_length_m;
-  const double c0 = eos().sound_speed_m_s();
-  const Fastest fastest = reduce_blocks<Fastest>(
-      threads_, s_.fluid.size(),
-      [&](Eigen::Index begin, Eigen::Index end) { return fastest_fluid(s_.fluid, fluid_.force, begin, end); },
-      [](const Fastest& a, const Fastest& b) { return a.faster(b); });
-  const double v2_max = fastest.v2, a2_max = fastest.a2;
-  const Eigen::Index i_v = fastest.i_v, i_a = fastest.i_a;
-  const double v_max = std::sqrt(v2_max), a_max = std::sqrt(a2_max);
-  const double sound_limit = 0.25 * h / (c0 + v_max);
-  const double viscous_limit =
-      largest_viscosity_Pa_s_ > 0 ? 0.125 * h * h * p_.fluid_density_kg_m3 / largest_viscosity_Pa_s_ : INFINITY;
-  const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
-  const double dt = p_.dt_s;
-  const auto fail = [&](double limit, const std::string& what) {
-    std::ostringstream msg;
-    msg << where() << ": time step " << dt * 1e9 << " ns exceeds " << what << " (" << limit * 1e9
-        << " ns); reduce time.dt_ns";
-    throw NumericalFailure(msg.str());
-  };
-  if (dt > sound_limit)
-    fail(sound_limit, "the sound-speed CFL limit 0.25 h / (c0 + |v|max), |v|max = " + std::to_string(v_max) +
-                          " m/s at fluid particle " + std::to_string(i_v));
-  if (dt > viscous_limit) fail(viscous_limit, "the viscous limit 0.125 h^2 rho0 / mu");
-  if (dt > acceleration_limit)
-    fail(acceleration_limit, "the acceleration limit 0.25 sqrt(h / |a|max), |a|max = " + std::to_string(a_max) +
-                                 " m/s^2 at fluid particle " + std::to_string(i_a));
+  const std::string violation = time_step_violation(s_.fluid, fluid_.force, s_.smoothing_length_m,
+                                                    eos().sound_speed_m_s(), largest_viscosity_Pa_s_,
+                                                    p_.fluid_density_kg_m3, p_.dt_s, threads_);
+  if (!violation.empty()) throw NumericalFailure(where() + ": " + violation);
 }
 
 void Simulation::check_containment() const {

@@ -151,7 +151,6 @@ class Simulation {
   PressureCouplingScratch pressure_coupling_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
-  double wall_spring_dt_limit_s_;
   double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked
   PhaseTimer timer_;
 };

@@ -31,8 +31,7 @@ struct BondSprings {
     return stiff_energy(G_t_N_m, 1.0, l0_m, l_e) + contraction_energy(k_wc_N_m, l_e, l_ref_m);
   }
   double stiffness(double l_e) const {  // d(tension)/d(l_e)
-    const double lambda = l_e / l0_m;
-    return G_t_N_m / std::sqrt(3.0) * (1.0 + 1.0 / (lambda * lambda)) + k_wc_N_m;
+    return stiff_stiffness(G_t_N_m, l_e / l0_m) + k_wc_N_m;
   }
 };
 

@@ -13,6 +13,13 @@ inline double stiff_tension(double G_Pa, double thickness_m, double l0, double l
   return G_Pa * thickness_m * l0 / std::sqrt(3.0) * (lambda - 1.0 / lambda);
 }
 
+// The stiff spring's stiffness, d(Eq 15's tension)/dl: (G t0 / sqrt 3)(1 + 1 / lambda^2), with G t0 the
+// bond's (wall_bonds.hpp); 2 G t0 / sqrt 3 at rest, where the time step's wall limit takes it (step_checks).
+inline double stiff_stiffness(double G_t_N_m, double lambda) {
+  return G_t_N_m / std::sqrt(3.0) * (1.0 + 1.0 / (lambda * lambda));
+}
+inline double stiff_stiffness_at_rest(double G_t_N_m) { return stiff_stiffness(G_t_N_m, 1.0); }
+
 // The stiff spring's energy, the integral of Eq 15's tension over l from l0:
 // (G t0 l0^2 / sqrt 3) ((lambda^2 - 1) / 2 - ln lambda).
 inline double stiff_energy(double G_Pa, double thickness_m, double l0, double l) {
