@@ -6,6 +6,7 @@
 
 #include "engine/measures.hpp"
 #include "geometry/cell.hpp"
+#include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 
 using namespace cellsim;
@@ -68,8 +69,7 @@ TEST(Geometry, TableThreeMassesAtDefaultCell) {
 }
 
 TEST(Geometry, DerivedDefaultsFollowTheMesh) {
-  Params p = defaults_with(150, 2067, 3082);
-  build_cell(p);
+  const Params p = defaults_with(150, 2067, 3082);  // validated: its derived values resolved
   // model.md §4: r0 ~ 8 um for the default mesh; h0 = 6.8 um exactly for the default cell.
   EXPECT_NEAR(*p.r0_m, 8e-6, 0.5e-6);
   EXPECT_DOUBLE_EQ(*p.h0_m, 6.8e-6);
@@ -94,9 +94,8 @@ TEST(Geometry, SmoothingRatioSetsH0FromTheSpacing) {
 }
 
 TEST(Geometry, H0AndSmoothingRatioTogetherAreRefused) {
-  Params p = validate_case({{"fluid", {{"h_over_dx", 1.2}, {"h0_um", 8.0}}}});
   try {
-    build_cell(p);
+    validate_case({{"fluid", {{"h_over_dx", 1.2}, {"h0_um", 8.0}}}});  // where the derived values are resolved
     FAIL() << "both keys accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("fluid.h0_um"), std::string::npos) << e.what();
@@ -118,4 +117,13 @@ TEST(Geometry, LatticePointsAreTheNearestToTheCentre) {
   const Eigen::Matrix3Xd x = nearest_lattice_points(7, &farthest);
   EXPECT_DOUBLE_EQ(farthest, 1.0);  // origin + 6 face neighbours
   EXPECT_DOUBLE_EQ(x.colwise().norm().sum(), 6.0);
+}
+
+TEST(Geometry, ABuilderNeedsTheDerivedValuesResolvedFirst) {
+  Params p = defaults_with(150, 642, 700);
+  p.r0_m.reset();  // as a case before validate_case resolves it (h0 given, its ratio derived)
+  p.h_over_dx.reset();
+  EXPECT_THROW(build_tissue(p), std::logic_error);
+  resolve_derived_geometry(p);
+  EXPECT_EQ(build_tissue(p).wall_x, build_cell(p).wall_x);
 }

@@ -19,7 +19,7 @@ std::size_t BenchResult::median_repeat() const {
 }
 
 BenchResult measure_steps(const Params& case_params, long steps, int repeats, int threads, long reference_particles) {
-  Params p = case_params;
+  const Params& p = case_params;
   const Tissue cell = build_tissue(p);
   BenchResult r;
   r.fluid_particles = cell.fluid_x.cols();

@@ -158,8 +158,8 @@ int dispatch(int argc, char** argv) {
     return 0;
   }
   if (a.command == "validate") {
-    cellsim::Params p = load(a);
-    const cellsim::Tissue tissue = cellsim::build_tissue(p);  // resolves derived values, checks the geometry
+    const cellsim::Params p = load(a);
+    const cellsim::Tissue tissue = cellsim::build_tissue(p);  // checks the geometry
     cellsim::Simulation check(p, tissue);                        // and the time step's static limit
     std::cout << cellsim::case_to_json(p).dump(2) << "\n";
     return 0;

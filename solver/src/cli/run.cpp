@@ -80,8 +80,8 @@ std::string asked_end(const Params& p) {
 
 }  // namespace
 
-void run_case(Params p, const RunOptions& options) {
-  const Tissue tissue = build_tissue(p);  // fills in derived parameters
+void run_case(const Params& p, const RunOptions& options) {
+  const Tissue tissue = build_tissue(p);
   const nlohmann::json resolved = case_to_json(p);
   // --from: a state at rest (step 0: settled, not dried) starts drying; the end of drying, compression.
   SavedRun saved;

@@ -15,6 +15,6 @@ struct RunOptions {
 
 // Throws InputError before writing anything under the output's final name, NumericalFailure
 // after leaving OUT.partial marked incomplete.
-void run_case(Params p, const RunOptions& options);
+void run_case(const Params& p, const RunOptions& options);
 
 }  // namespace cellsim

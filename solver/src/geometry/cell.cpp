@@ -1,64 +1,98 @@
 #include "geometry/cell.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "geometry/hull.hpp"
+#include "geometry/surface.hpp"
 
 namespace cellsim {
 namespace {
 
-struct WallAndFluid {
-  Eigen::Matrix3Xd wall_x;
-  WallMesh mesh;
-  double r0_m;
-  double fluid_spacing_m;
-  Eigen::Matrix3Xd fluid_x;
-  double fill_gap_m;
-};
-
-// The geometry shared by the case and the reference cell: only size and counts matter.
-// The fill gap's default: 0.7 r0 outside the LJ layer's range; with the pressure coupling, half
-// the fluid spacing, so that the fluid's volume (one spacing around each particle) reaches the wall.
-WallAndFluid build_geometry(double radius, int n_wall, int n_fluid, std::optional<double> r0,
-                            std::optional<double> fill_gap, Choice coupling = kLennardJones) {
-  WallAndFluid g;
-  g.wall_x = fibonacci_sphere(n_wall, radius);
-  g.mesh = build_wall_mesh(g.wall_x, convex_hull_triangles(g.wall_x));
-  g.r0_m = r0 ? *r0 : kR0OverCircumradius * largest_circumradius(g.wall_x, g.mesh.triangles);
-  double farthest = 0;
-  const Eigen::Matrix3Xd unit = nearest_lattice_points(n_fluid, &farthest);
-  if (fill_gap)
-    g.fill_gap_m = *fill_gap;
-  else if (coupling == kPressure)
-    g.fill_gap_m = 0.5 * radius / (farthest + 0.5);  // dx / 2 with dx = (R - dx / 2) / farthest
-  else
-    g.fill_gap_m = kFillGapOverR0 * g.r0_m;
-  const double fill_radius = radius - g.fill_gap_m;
-  if (!(fill_radius > 0)) {
-    std::ostringstream msg;
-    msg << "cell.fill_gap_um = " << g.fill_gap_m * 1e6 << ": must be smaller than the cell radius " << radius * 1e6
-        << " um" << (fill_gap ? "" : " (it defaults to 0.7 r0: set coupling.r0_um or cell.fill_gap_um)");
-    throw InputError(msg.str());
-  }
-  // Largest spacing with every point inside the fill radius; a lone particle sits at the centre.
-  g.fluid_spacing_m = farthest > 0 ? fill_radius / farthest * (1.0 - 1e-12) : fill_radius;
-  g.fluid_x = unit * g.fluid_spacing_m;
-  return g;
+// model.md §4: r0 = 1.8 x the largest circumradius of the wall's triangles, on the sphere of this
+// radius and count (the free cell's mesh).
+double derived_r0_m(double radius, int n_wall) {
+  const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, radius);
+  // the mesh's triangles (each rotated to its smallest vertex), whose circumradii the cell's own are
+  return kR0OverCircumradius * largest_circumradius(sphere, build_wall_mesh(sphere, convex_hull_triangles(sphere)).triangles);
 }
 
-// Fluid spacing of the paper's default cell (D = 150 um, 2067 / 3082): the dx_ref of Eq 6's h0 rule.
+// The lattice radius (in spacings) of the farthest of the N_f lattice points nearest the centre.
+double lattice_farthest(int n_fluid) {
+  double farthest = 0;
+  nearest_lattice_points(n_fluid, &farthest);
+  return farthest;
+}
+
+// The fill gap's default: 0.7 r0 outside the LJ layer's range; with the pressure coupling, half the
+// fluid spacing, so that the fluid's volume (one spacing around each particle) reaches the wall.
+double default_fill_gap_m(double radius, double farthest, double r0_m, Choice coupling) {
+  if (coupling == kPressure) return 0.5 * radius / (farthest + 0.5);  // dx / 2 with dx = (R - dx / 2) / farthest
+  return kFillGapOverR0 * r0_m;
+}
+
+// Largest spacing with every point inside the fill radius; a lone particle sits at the centre.
+// fill_gap_given: the gap was the case's own (else a default, which the message explains).
+double lattice_spacing_m(double radius, double fill_gap_m, double farthest, bool fill_gap_given) {
+  const double fill_radius = radius - fill_gap_m;
+  if (!(fill_radius > 0)) {
+    std::ostringstream msg;
+    msg << "cell.fill_gap_um = " << fill_gap_m * 1e6 << ": must be smaller than the cell radius " << radius * 1e6
+        << " um" << (fill_gap_given ? "" : " (it defaults to 0.7 r0: set coupling.r0_um or cell.fill_gap_um)");
+    throw InputError(msg.str());
+  }
+  return farthest > 0 ? fill_radius / farthest * (1.0 - 1e-12) : fill_radius;
+}
+
+// Fluid spacing of the paper's default cell (D = 150 um, 2067 / 3082, LJ): the dx_ref of Eq 6's h0 rule.
 double reference_fluid_spacing() {
-  static const double dx_ref = build_geometry(75e-6, 2067, 3082, std::nullopt, std::nullopt).fluid_spacing_m;
+  static const double dx_ref = [] {
+    const double radius = 75e-6, farthest = lattice_farthest(3082);
+    const double fill_gap = default_fill_gap_m(radius, farthest, derived_r0_m(radius, 2067), kLennardJones);
+    return lattice_spacing_m(radius, fill_gap, farthest, false);
+  }();
   return dx_ref;
 }
 
 }  // namespace
+
+void resolve_derived_geometry(Params& p) {
+  const double radius = 0.5 * p.diameter_m;
+  const int n_wall = static_cast<int>(p.n_wall), n_fluid = static_cast<int>(p.n_fluid);
+  const double farthest = lattice_farthest(n_fluid);
+  const bool fill_gap_given = p.fill_gap_m.has_value();
+  if (!p.r0_m) p.r0_m = derived_r0_m(radius, n_wall);
+  if (!p.fill_gap_m) p.fill_gap_m = default_fill_gap_m(radius, farthest, *p.r0_m, p.coupling_model);
+  const double dx = lattice_spacing_m(radius, *p.fill_gap_m, farthest, fill_gap_given);
+  if (p.h0_m && p.h_over_dx) {
+    std::ostringstream msg;
+    msg << "fluid.h0_um = " << *p.h0_m * 1e6 << " and fluid.h_over_dx = " << *p.h_over_dx
+        << " both set the smoothing length: set one of them";
+    throw InputError(msg.str());
+  }
+  if (!p.h0_m)  // the paper's h0 scaled with dx (as written, so the default's bits stay those of the rule)
+    p.h0_m = p.h_over_dx ? *p.h_over_dx * dx : kReferenceH0_m * dx / reference_fluid_spacing();
+  p.h_over_dx = *p.h0_m / dx;
+  if (!p.wall_gap_m) p.wall_gap_m = p.thickness_m;  // model.md §10: facing walls one wall thickness apart
+}
+
+double fluid_spacing_m(const Params& p) {
+  return lattice_spacing_m(0.5 * p.diameter_m, p.fill_gap_m.value(), lattice_farthest(static_cast<int>(p.n_fluid)),
+                           true);
+}
+
+double wall_particle_mass_kg(const Params& p) {
+  const double radius = 0.5 * p.diameter_m;
+  const double cell_volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
+  return p.wall_mass_fraction * p.fluid_density_kg_m3 * cell_volume / static_cast<double>(p.n_wall);
+}
 
 Eigen::Matrix3Xd nearest_lattice_points(int n, double* farthest) {
   const int m = static_cast<int>(std::ceil(std::cbrt(3.0 * n / (4.0 * M_PI)))) + 2;
@@ -88,32 +122,41 @@ Eigen::Matrix3Xd nearest_lattice_points(int n, double* farthest) {
   return x;
 }
 
-Cell build_cell(Params& p) {
+Cell build_cell(const Params& p, const CellShape& shape, double fluid_spacing) {
   const double radius = 0.5 * p.diameter_m;
-  WallAndFluid g = build_geometry(radius, static_cast<int>(p.n_wall), static_cast<int>(p.n_fluid), p.r0_m,
-                                  p.fill_gap_m, p.coupling_model);
-  p.r0_m = g.r0_m;
-  p.fill_gap_m = g.fill_gap_m;
-  if (p.h0_m && p.h_over_dx) {
-    std::ostringstream msg;
-    msg << "fluid.h0_um = " << *p.h0_m * 1e6 << " and fluid.h_over_dx = " << *p.h_over_dx
-        << " both set the smoothing length: set one of them";
-    throw InputError(msg.str());
-  }
-  if (!p.h0_m)  // the paper's h0 scaled with dx (as written, so the default's bits stay those of the rule)
-    p.h0_m = p.h_over_dx ? *p.h_over_dx * g.fluid_spacing_m
-                         : kReferenceH0_m * g.fluid_spacing_m / reference_fluid_spacing();
-  p.h_over_dx = *p.h0_m / g.fluid_spacing_m;
-
+  const double rc = shape.radius_m > 0 ? shape.radius_m : radius, scale = rc / radius;
   Cell cell;
-  const double cell_volume = 4.0 / 3.0 * M_PI * radius * radius * radius;
-  cell.fluid_mass_kg = p.fluid_density_kg_m3 * cell_volume / static_cast<double>(p.n_fluid);
-  cell.wall_mass_kg = p.wall_mass_fraction * p.fluid_density_kg_m3 * cell_volume / static_cast<double>(p.n_wall);
-  cell.wall_x = std::move(g.wall_x);
-  cell.mesh = std::move(g.mesh);
-  cell.fluid_x = std::move(g.fluid_x);
-  cell.fluid_spacing_m = g.fluid_spacing_m;
+  cell.fluid_spacing_m = fluid_spacing;
+  cell.wall_mass_kg = wall_particle_mass_kg(p);
+  // The wall: a sphere with the wall's particle spacing, each point moved onto the faces; its
+  // triangles are the sphere's (every point stays on a ray from the centre: still outward).
+  const int n_wall = static_cast<int>(std::lround(static_cast<double>(p.n_wall) * scale * scale));
+  const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, rc, shape.spiral_axis);
+  const std::vector<std::array<int, 3>> triangles = convex_hull_triangles(sphere);
+  cell.wall_x = sphere;
+  if (shape.onto_faces)
+    for (Eigen::Index k = 0; k < sphere.cols(); ++k) cell.wall_x.col(k) = shape.onto_faces(sphere.col(k));
+  cell.mesh = build_wall_mesh(cell.wall_x, triangles);
+  // The fluid: the lattice points the sphere of rc would hold, less those the faces take.
+  double farthest = 0;
+  const Eigen::Matrix3Xd lattice =
+      nearest_lattice_points(static_cast<int>(std::lround(static_cast<double>(p.n_fluid) * scale * scale * scale)),
+                             &farthest) *
+      fluid_spacing;
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index i = 0; i < lattice.cols(); ++i)
+    if (!shape.holds_fluid || shape.holds_fluid(lattice.col(i))) kept.push_back(i);
+  cell.fluid_x.resize(3, static_cast<Eigen::Index>(kept.size()));
+  for (std::size_t i = 0; i < kept.size(); ++i) cell.fluid_x.col(static_cast<Eigen::Index>(i)) = lattice.col(kept[i]);
+  // Its fluid mass: rho0 times the sphere's volume, cut as the faces cut the wall's.
+  const double sphere_volume = 4.0 / 3.0 * M_PI * rc * rc * rc;
+  const double cut =
+      shape.onto_faces ? wall_surface(cell.wall_x, cell.mesh).volume_m3 / wall_surface(sphere, cell.mesh).volume_m3 : 1.0;
+  if (!kept.empty())
+    cell.fluid_mass_kg = p.fluid_density_kg_m3 * (sphere_volume * cut) / static_cast<double>(cell.fluid_x.cols());
   return cell;
 }
+
+Cell build_cell(const Params& p, const CellShape& shape) { return build_cell(p, shape, fluid_spacing_m(p)); }
 
 }  // namespace cellsim

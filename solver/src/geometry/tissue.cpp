@@ -7,6 +7,7 @@
 #include <functional>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
@@ -256,44 +257,33 @@ std::vector<int> CellRanges::cell_of_fluid() const { return cell_of(fluid); }
 int CellRanges::layers() const { return layer.empty() ? 1 : *std::max_element(layer.begin(), layer.end()) + 1; }
 std::vector<int> CellRanges::cell_of_wall() const { return cell_of(wall); }
 
-Tissue build_tissue(Params& p) {
-  const Cell model = build_cell(p);  // the paper's cell: derived parameters, dx, masses
-  if (!p.wall_gap_m) p.wall_gap_m = p.thickness_m;
-  const double radius = 0.5 * p.diameter_m, gap = *p.wall_gap_m;
+Tissue build_tissue(const Params& p) {
+  if (!p.r0_m || !p.fill_gap_m || !p.h0_m || !p.wall_gap_m)
+    throw std::logic_error("build_tissue: the case's derived parameters are unresolved (resolve_derived_geometry)");
+  const double gap = *p.wall_gap_m;
   const double centre_distance = p.centre_distance_over_diameter * p.diameter_m;
   const std::vector<Eigen::Vector3d> centres = lattice_centres(p, centre_distance);
   const std::vector<double> radii = cell_radii(p, centres.size());
 
   Tissue t;
   t.mesh.cell_triangles = {0};
-  t.wall_mass_kg = model.wall_mass_kg;
-  t.fluid_spacing_m = model.fluid_spacing_m;
+  t.wall_mass_kg = wall_particle_mass_kg(p);
+  t.fluid_spacing_m = fluid_spacing_m(p);
   t.centre_m = centres;
   t.box = lattice_period(p, centre_distance);
   t.wall_particle_area_m2 = M_PI * p.diameter_m * p.diameter_m / static_cast<double>(p.n_wall);
   std::vector<Eigen::Matrix3Xd> walls, fluids;
   std::vector<double> fluid_masses;
   for (int c = 0; c < static_cast<int>(centres.size()); ++c) {
-    const double rc = radii[c], scale = rc / radius;
+    const double rc = radii[c];
     const std::vector<Face> faces = faces_of(c, centres, radii, gap, t.box);
-    // The wall: a sphere with the wall's particle spacing, each point moved onto the faces; its
-    // triangles are the sphere's (every point stays on a ray from the centre: still outward).
-    const int n_wall = static_cast<int>(std::lround(static_cast<double>(p.n_wall) * scale * scale));
-    const Eigen::Matrix3Xd sphere = fibonacci_sphere(n_wall, rc, spiral_axis(faces));
-    const std::vector<std::array<int, 3>> triangles = convex_hull_triangles(sphere);
-    Eigen::Matrix3Xd wall(3, sphere.cols());
-    for (Eigen::Index k = 0; k < sphere.cols(); ++k) wall.col(k) = onto_faces(sphere.col(k), rc, faces);
-    WallMesh mesh = build_wall_mesh(wall, triangles);
-    // The fluid: the lattice points the sphere of rc would hold, less those within the fill gap of a face.
-    double farthest = 0;
-    const Eigen::Matrix3Xd lattice =
-        nearest_lattice_points(static_cast<int>(std::lround(static_cast<double>(p.n_fluid) * scale * scale * scale)),
-                               &farthest) *
-        model.fluid_spacing_m;
-    std::vector<Eigen::Index> kept;
-    for (Eigen::Index i = 0; i < lattice.cols(); ++i)
-      if (inside_faces(lattice.col(i), faces, *p.fill_gap_m)) kept.push_back(i);
-    if (kept.empty()) {  // the fill gap (or the faces pressed flat) left no lattice point inside
+    CellShape shape{rc, spiral_axis(faces), nullptr, nullptr};
+    if (!faces.empty()) {  // flattened where it meets a neighbour; its fluid kept the fill gap from the faces
+      shape.onto_faces = [&](const Eigen::Vector3d& x) { return onto_faces(x, rc, faces); };
+      shape.holds_fluid = [&](const Eigen::Vector3d& x) { return inside_faces(x, faces, *p.fill_gap_m); };
+    }
+    Cell cell = build_cell(p, shape, t.fluid_spacing_m);
+    if (cell.fluid_x.cols() == 0) {  // the fill gap (or the faces pressed flat) left no lattice point inside
       std::ostringstream msg;
       msg << "cell.fill_gap_um = " << *p.fill_gap_m * 1e6 << ": cell " << c << " (radius " << rc * 1e6
           << " um, its faces at tissue.centre_distance_over_diameter = " << p.centre_distance_over_diameter
@@ -301,13 +291,8 @@ Tissue build_tissue(Params& p) {
           << ") holds no fluid particle farther than that from its wall; give smaller gaps";
       throw InputError(msg.str());
     }
-    Eigen::Matrix3Xd fluid(3, static_cast<Eigen::Index>(kept.size()));
-    for (std::size_t i = 0; i < kept.size(); ++i) fluid.col(static_cast<Eigen::Index>(i)) = lattice.col(kept[i]);
-    // Its fluid mass: rho0 times the sphere's volume, cut as the faces cut the wall's.
-    const double sphere_volume = 4.0 / 3.0 * M_PI * rc * rc * rc;
-    const double cut = faces.empty() ? 1.0 : wall_surface(wall, mesh).volume_m3 / wall_surface(sphere, mesh).volume_m3;
-    fluid_masses.push_back(p.fluid_density_kg_m3 * (sphere_volume * cut) / static_cast<double>(fluid.cols()));
-
+    fluid_masses.push_back(cell.fluid_mass_kg);
+    WallMesh& mesh = cell.mesh;
     const int first_triangle = static_cast<int>(t.mesh.triangles.size());
     for (auto& tri : mesh.triangles)
       for (int& v : tri) v += static_cast<int>(t.cells.wall.back());
@@ -322,12 +307,12 @@ Tissue build_tissue(Params& p) {
     t.mesh.bonds.insert(t.mesh.bonds.end(), mesh.bonds.begin(), mesh.bonds.end());
     t.mesh.rest_length_m.insert(t.mesh.rest_length_m.end(), mesh.rest_length_m.begin(), mesh.rest_length_m.end());
     t.mesh.hinges.insert(t.mesh.hinges.end(), mesh.hinges.begin(), mesh.hinges.end());
-    t.cells.wall.push_back(t.cells.wall.back() + wall.cols());
+    t.cells.wall.push_back(t.cells.wall.back() + cell.wall_x.cols());
     t.cells.layer.push_back(static_cast<int>(c / (p.cells_x * p.cells_y)));  // lattice_centres: layer by layer
-    t.cells.fluid.push_back(t.cells.fluid.back() + fluid.cols());
+    t.cells.fluid.push_back(t.cells.fluid.back() + cell.fluid_x.cols());
     t.mesh.cell_triangles.push_back(static_cast<int>(t.mesh.triangles.size()));
-    walls.push_back(wall.colwise() + centres[c]);
-    fluids.push_back(fluid.colwise() + centres[c]);
+    walls.push_back(cell.wall_x.colwise() + centres[c]);
+    fluids.push_back(cell.fluid_x.colwise() + centres[c]);
   }
   t.wall_x.resize(3, t.cells.wall.back());
   t.fluid_x.resize(3, t.cells.fluid.back());

@@ -48,9 +48,9 @@ struct Tissue {
   PeriodicBox box;                        // tissue.lateral = periodic: the lateral period (else none)
 };
 
-// Builds the tissue and fills in the derived parameters of p that are still unset (those of
-// build_cell, and tissue.wall_gap_um). Throws InputError if the geometry is impossible. A periodic
+// Builds the tissue of a resolved case (resolve_derived_geometry, cell.hpp), each cell by build_cell
+// with the faces it meets its neighbours by. Throws InputError if the geometry is impossible. A periodic
 // tissue's cells face their neighbours' images across the period as they face their neighbours.
-Tissue build_tissue(Params& p);
+Tissue build_tissue(const Params& p);
 
 }  // namespace cellsim

@@ -15,6 +15,7 @@
 #include "engine/stage_caps.hpp"
 #include "engine/steady_state.hpp"
 #include "geometry/case_size.hpp"
+#include "geometry/cell.hpp"
 #include "io/case_schema.hpp"
 #include "physics/volume_closure.hpp"
 
@@ -301,11 +302,12 @@ Params validate_case(const json& doc) {
     }
   }
   check_case_size(p);
-  resolve_steady_state_defaults(p);  // derived keys that need no geometry (the others: build_cell)
+  resolve_steady_state_defaults(p);
   resolve_density_update(p);
   resolve_unloading(p);
   resolve_stage_caps(p);
   resolve_volume_closure(p);
+  resolve_derived_geometry(p);  // r0, the fill gap, h0 and h0/dx, the wall gap: from the paper's cell (cell.hpp)
   return p;
 }
 
