@@ -2,9 +2,9 @@
 least MIN_PANEL_IN in the saved figure, and no legend covers more than MAX_LEGEND_SHARE of a panel.
 Curves are drawn from synthetic series (one per case of the figure); shapes and the model figure
 from one small real run, shared by every case."""
+import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
-import pytest
 
 from analysis import matrix, quantities
 from analysis.figures import curves, model, shapes
@@ -43,9 +43,24 @@ def draw(config, fig, root, small_run):
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, {n: cases[n] for n in names})
 
 
-@pytest.mark.parametrize("which", ["default", "ci"])
-def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path, which):
+def figure_layouts(config):
+    """What a figure's layout depends on: per figure, its spec and its cases' count."""
+    cases = matrix.expand(config)
+    return {fig: (spec, len(matrix.figure_cases(config, fig, cases))) for fig, spec in config["figures"].items()}
+
+
+def test_the_ci_configs_figures_are_laid_out_as_the_defaults(root):
+    """config/ci.yaml makes the cells smaller, not the figures: each figure has the default's spec and as
+    many cases, so the layout check of the default's figures below holds for the CI's (drawing them again
+    took 90 s of the test command). A figure that comes to differ fails here: then check both."""
+    layouts = {which: figure_layouts(config) for which, config in configs(root).items()}
+    assert len(layouts["default"]) >= 18
+    assert layouts["ci"] == layouts["default"]
+
+
+def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path):
     small_run = small_runs[1.0]
+    which = "default"
     config = configs(root)[which]
     checked = 0
     for fig in sorted(config["figures"]):
@@ -64,7 +79,6 @@ def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path, whic
                 overlap = box.intersection(box, legend.get_window_extent())
                 share = overlap.width * overlap.height / (box.width * box.height) if overlap else 0.0
                 assert share <= MAX_LEGEND_SHARE, f"{which} {fig}: the legend covers {share:.0%} of a panel"
-        import matplotlib.pyplot as plt
         plt.close(figure)
         checked += 1
     assert checked == len(config["figures"]) >= 18
@@ -87,5 +101,4 @@ def test_shape_panels_share_one_scale(root, small_runs):
         assert np.abs(wall).max() <= reach
         widths.append(np.ptp(wall[:, 0]))
     assert max(widths) / min(widths) > 1.05  # the dried cell is narrower at the end of drying
-    import matplotlib.pyplot as plt
     plt.close(figure)

@@ -5,7 +5,10 @@ mutant that once broke a rule is in it (its `defect` says what it was), beside a
 spread over its outcomes. Each must meet every rule (tests/fuzz/rules.py).
 
 The solver's mutants carry the marker `sanitizer`: scripts/test runs them in its sanitizer tier, with
-CELLSIM pointing at the build under AddressSanitizer and UndefinedBehaviorSanitizer."""
+CELLSIM pointing at the build under AddressSanitizer and UndefinedBehaviorSanitizer. scripts/test replays
+every defect and every SAMPLE_EVERY-th of the rest; the others carry the marker `full` too, which
+scripts/test --all adds (the whole corpus took 5 min of the sanitizer tier and its configs 4 min of the
+fast one: most of a sample shares its path through the code with its neighbours)."""
 import json
 import random
 
@@ -30,6 +33,14 @@ def label(record):
 
 
 CASES, FILES, CONFIGS = corpus("cases.jsonl"), corpus("files.jsonl"), corpus("configs.jsonl")
+SAMPLE_EVERY = 4
+
+
+def replayed(records, *marks):
+    """The records as parameters: a defect, and every SAMPLE_EVERY-th of the rest, with `marks` only;
+    the others with `full` too."""
+    return [pytest.param(r, marks=[*marks] + ([] if r.get("defect") or i % SAMPLE_EVERY == 0 else [pytest.mark.full]),
+                         id=f"{i}-{label(r)}") for i, r in enumerate(records)]
 
 
 def test_the_corpus_holds_a_sample_and_every_defect_found():
@@ -40,8 +51,7 @@ def test_the_corpus_holds_a_sample_and_every_defect_found():
     assert {"validate 0 / run 0", "validate 2 / run 2", "validate 0 / run 3"} <= outcomes
 
 
-@pytest.mark.sanitizer
-@pytest.mark.parametrize("record", CASES, ids=[f"{i}-{label(r)}" for i, r in enumerate(CASES)])
+@pytest.mark.parametrize("record", replayed(CASES, pytest.mark.sanitizer))
 def test_a_case_mutant_meets_every_rule(cellsim, tmp_path, record):
     mutant = Mutant(record["seed"], record["ops"], record["text"], record["overrides"])
     _, _, broken = solver_cases.check_mutant(cellsim, mutant, tmp_path)
@@ -54,15 +64,14 @@ def corrupter(cellsim, tmp_path_factory):
     return file_corruptions.Corrupter(random.Random(0), cellsim, tmp_path_factory.mktemp("sources"))
 
 
-@pytest.mark.sanitizer
-@pytest.mark.parametrize("record", FILES, ids=[f"{i}-{label(r)}" for i, r in enumerate(FILES)])
+@pytest.mark.parametrize("record", replayed(FILES, pytest.mark.sanitizer))
 def test_a_corrupted_file_meets_every_rule(corrupter, tmp_path, record):
     mutant = FileMutant(record["seed"], [tuple(op) for op in record["ops"]], salt=record["salt"])
     _, broken = corrupter.check(mutant, tmp_path)
     assert broken == [], broken
 
 
-@pytest.mark.parametrize("record", CONFIGS, ids=[f"{i}-{label(r)}" for i, r in enumerate(CONFIGS)])
+@pytest.mark.parametrize("record", replayed(CONFIGS))
 def test_a_config_mutant_is_planned_or_refused_naming_its_key(root, tmp_path, record):
     mutant = ConfigMutant(ops=record["ops"], text=record["text"], paths=record["paths"])
     _, broken = config_mutations.check_mutant(root, mutant, tmp_path)

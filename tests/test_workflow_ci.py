@@ -1,6 +1,7 @@
-"""The whole pipeline end to end on config/ci.yaml (reduced cells): every case runs, every figure shows
-its data (tests/figure_checks.py), the tables and the report are written, every claim is judged.
-Slow: a few minutes on 2 cores."""
+"""The whole pipeline end to end on config/ci.yaml (the paper's 48 cases on reduced cells): every case
+runs, every figure shows its data (tests/figure_checks.py), the tables and the report are written, every
+claim is judged. Slow: about 12 minutes on 2 cores (scripts/test --all); scripts/test runs the same checks
+on the tiny matrix (test_workflow_tiny.py)."""
 import subprocess
 import textwrap
 
