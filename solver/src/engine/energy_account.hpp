@@ -1,10 +1,10 @@
 #pragma once
-// The energy account (docs/model.md, "The energy account"). At every record: the energy stored in the
-// particles (kinetic; the fluid's internal energy of Eq 7; the wall's stiff, contraction and bending
-// energies; the LJ coupling's potential; the plates' springs), and the running integrals of what the
-// non-conservative terms put in or took out (EnergyFlows, state.hpp): plate work, viscous and damping
-// losses, the water Eq 11 carries across the wall, the wall-pressure closure's mass scaling and the
-// drying ramp. What none of them explains is the residual: the error of the discretisation (the time
+// The energy account (docs/model.md, "The energy account"), over the table of its terms
+// (core/energy_terms.hpp). At every record: the energy stored in the particles (kinetic; the fluid's
+// internal energy of Eq 7; the wall's stiff, contraction and bending energies; the LJ coupling's
+// potential; the plates' springs; a tissue's contacts and lamella), and the running integrals of what the
+// non-conservative terms put in or took out (EnergyFlows, state.hpp). What none of them explains is the
+// residual: the error of the discretisation (the time
 // step, the cut-off r_c = 2h that moves with h, a wall particle entering a plate's footprint inside its
 // range) and any term that creates or destroys energy, such as a coupling that is not conservative.
 #include "core/state.hpp"

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -20,7 +19,6 @@
 #include "physics/pressure_coupling.hpp"
 #include "physics/volume_closure.hpp"
 #include "physics/wall_fluid.hpp"
-#include "physics/wall_terms.hpp"
 
 namespace cellsim {
 namespace {
