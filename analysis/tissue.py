@@ -49,7 +49,7 @@ def numerics(row):
     """The coupling and resolution a case ran with, in words (its single cell is the one alike)."""
     if row["coupling.model"] != "pressure":
         return "paper's (LJ)"
-    return f"pressure coupling, h0/dx {row['fluid.h_over_dx']:.2g}"  # the resolved case's ratio
+    return f"pressure coupling, h0/dx {row['fluid.h_over_dx']:.3g}"  # the resolved case's ratio (1.2, 1.25, 0.888)
 
 
 def single_cell_of(rows, row):
