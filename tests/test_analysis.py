@@ -7,7 +7,7 @@ import pandas as pd
 import pytest
 import yaml
 
-from analysis import aggregate, claims, convergence, matrix, quantities, references
+from analysis import aggregate, claims, convergence, matrix, quantities, references, tissue
 from analysis.figures import common, curves
 
 
@@ -353,12 +353,12 @@ def test_anchor_runs_are_the_anchor_studies_and_the_ladders_fresh_cells(config):
 
 def test_tissue_target_runs_tissues_beside_the_papers_single_cell(config):
     cases = matrix.expand(config)
-    tissue = matrix.target_cases(config, cases, "tissue")
+    tissue_cases = matrix.target_cases(config, cases, "tissue")
     # 3 dryness x (1, 8, 27 cells) in the paper's numerics; in the pressure coupling's: 12 slabs, the
     # deep one and the fresh ones at 4 m/s, 6 clusters, 6 single cells.
-    assert len(tissue) == 9 + 13 + 2 + 6 + 6
+    assert len(tissue_cases) == 9 + 13 + 2 + 6 + 6
     default = set(matrix.target_cases(config, cases))
-    assert {n for n in tissue if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
+    assert {n for n in tissue_cases if n in default} == {"D150_G18_P200_t6_v1_X1", "D150_G18_P200_t6_v1_X0.5",
                                                    "D150_G18_P200_t6_v1_X0.1"}  # one cell: the paper's case
     big = cases["D150_G18_N27_P200_t6_v1_X0.1"]
     assert {k: big.case["tissue"][k] for k in ("cells_x", "cells_y", "cells_z")} == {"cells_x": 3, "cells_y": 3, "cells_z": 3}
@@ -560,3 +560,10 @@ def test_a_half_written_result_in_a_results_folder_is_named_not_read(small_runs,
     cut.write_bytes(whole.read_bytes()[: whole.stat().st_size // 2])
     with pytest.raises(IncompleteResult, match=r"cut\.h5: cannot be read as a cellsim result .*truncated file"):
         timeseries(cut)
+
+
+def test_the_tissue_tables_numerics_label_is_the_cases_own():
+    """A pressure-coupling case is labelled with the h0/dx it ran with, not a fixed one."""
+    assert tissue.numerics({"coupling.model": "pressure", "fluid.h_over_dx": 1.25}) == "pressure coupling, h0/dx 1.25"
+    assert tissue.numerics({"coupling.model": "pressure", "fluid.h_over_dx": 1.2}) == "pressure coupling, h0/dx 1.2"
+    assert tissue.numerics({"coupling.model": "lennard_jones", "fluid.h_over_dx": 0.888}) == "paper's (LJ)"
