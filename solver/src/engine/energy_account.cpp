@@ -6,7 +6,7 @@
 namespace cellsim {
 
 EnergyValues energy_terms(const State& s, const EnergyModel& model) {
-  EnergyValues e = s.energy.integral;  // the integrated terms; the others are set below
+  EnergyValues e = s.energy.integral;  // the integrated terms (zero in the others' slots); the others set below
   double kinetic_J = 0, internal_J = 0;
   const FluidParticles& f = s.fluid;
   for (Eigen::Index i = 0; i < f.size(); ++i) {
@@ -29,7 +29,6 @@ EnergyValues energy_terms(const State& s, const EnergyModel& model) {
   }
   e[kCouplingPotential] = coupling_J;
   e[kPlateSprings] = plate_energy_J(s.wall.x, model.plates, s.plates);
-  e[kContact] = e[kLamella] = e[kLamellaLoss] = 0;
   if (model.contact) {
     const CellContactEnergy between = cell_contact_energy(s.wall.x, *model.wall_wall, *model.lamella, *model.contact,
                                                           s.box, s.lamella_intact, s.lamella_peak_opening_m);

@@ -70,10 +70,10 @@ std::string time_step_violation(const FluidParticles& f, const Eigen::Matrix3Xd&
       [&](Eigen::Index begin, Eigen::Index end) { return fastest_fluid(f, fluid_force, begin, end); },
       [](const Fastest& a, const Fastest& b) { return a.faster(b); });
   const double v_max = std::sqrt(fastest.v2), a_max = std::sqrt(fastest.a2);
-  const double h = h_m;
-  const double sound_limit = 0.25 * h / (sound_speed_m_s + v_max);
-  const double viscous_limit = largest_viscosity_Pa_s > 0 ? 0.125 * h * h * rho0_kg_m3 / largest_viscosity_Pa_s : INFINITY;
-  const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h / a_max) : INFINITY;
+  const double sound_limit = 0.25 * h_m / (sound_speed_m_s + v_max);
+  const double viscous_limit =
+      largest_viscosity_Pa_s > 0 ? 0.125 * h_m * h_m * rho0_kg_m3 / largest_viscosity_Pa_s : INFINITY;
+  const double acceleration_limit = a_max > 0 ? 0.25 * std::sqrt(h_m / a_max) : INFINITY;
   const auto exceeds = [&](double limit, const std::string& what) {
     std::ostringstream msg;
     msg << "time step " << dt_s * 1e9 << " ns exceeds " << what << " (" << limit * 1e9 << " ns); reduce time.dt_ns";
