@@ -97,7 +97,7 @@ TEST(Heterogeneity, ACellsBondsGetTheirFactorsAndItsFluidItsViscosity) {
   const Moments m = moments(G_t_factor);  // the product of two independent factors: cv^2 = 1.3^2 1.2^2 / 1 - 1
   EXPECT_NEAR(m.mean, 1.0, 0.06);
   EXPECT_NEAR(m.sd, std::sqrt(1.09 * 1.04 - 1.0), 0.06);
-  const Viscosity mu = sim.viscosity();
+  const Viscosity mu = sim.sph_fluid().viscosity();
   ASSERT_NE(mu.per_particle_Pa_s, nullptr);
   for (Eigen::Index i = 0; i < sim.state().fluid.size(); ++i)
     EXPECT_EQ(mu.per_particle_Pa_s[i], mu.per_particle_Pa_s[0]);  // one cell, one viscosity
@@ -107,7 +107,7 @@ TEST(Heterogeneity, ACellsBondsGetTheirFactorsAndItsFluidItsViscosity) {
   const Tissue t2 = build_tissue(uniform);
   const Simulation plain(uniform, t2);
   for (double G_t : plain.bond_law().G_t_N_m) EXPECT_EQ(G_t, uniform.G_Pa * uniform.thickness_m);
-  EXPECT_EQ(plain.viscosity().per_particle_Pa_s, nullptr);
+  EXPECT_EQ(plain.sph_fluid().viscosity().per_particle_Pa_s, nullptr);
 }
 
 TEST(Heterogeneity, TheSameSeedGivesTheSameBitsAndTheAccountHolds) {

@@ -8,28 +8,27 @@
 // step, the cut-off r_c = 2h that moves with h, a wall particle entering a plate's footprint inside its
 // range) and any term that creates or destroys energy, such as a coupling that is not conservative.
 #include "core/state.hpp"
+#include "engine/fluid_model.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/wall_mesh.hpp"
 #include "physics/bending.hpp"
 #include "physics/cell_contact.hpp"
 #include "physics/eos.hpp"
-#include "physics/lennard_jones.hpp"
 #include "physics/plates.hpp"
 #include "physics/wall_bonds.hpp"
 
 namespace cellsim {
 
-// What the stored energy depends on besides the state. lj: null for the pressure coupling, which
-// stores nothing of its own (it carries the fluid's pressure, whose energy is the internal energy).
+// What the stored energy depends on besides the state: the fluid's terms come from its model
+// (fluid_model.hpp), the wall's and the plates' and a tissue's from their laws here.
 struct EnergyModel {
+  const FluidModel& fluid;
+  const FluidContext& fluid_context;
   const WallMesh& mesh;
   const BondLaw& bonds;
   double ramp;  // of L_ref (drying.hpp)
   const Bending& bending;
-  const LennardJones* lj;
-  const PairList& fluid_wall;
   const PlateLaw& plates;
-  EquationOfState eos;
   const CellContactLaw* contact = nullptr;  // a tissue's (null for one cell), with its pairs and bonds:
   const PairList* wall_wall = nullptr;
   const std::vector<LamellaBond>* lamella = nullptr;
@@ -48,22 +47,10 @@ double stored_energy_J(const EnergyValues& terms);
 // kicks advance the density (time.density_update = kick); with drift the density's own step counts them.
 void add_half_kick(const EnergyValues& power_W, double half_dt, bool density_flows, EnergyFlows& flows);
 
-// Sum over the fluid of dm/dt (v^2/2 + e + P/rho): the energy Eq 11's water brings in (threads: as the step's).
-double mass_transfer_power_W(const FluidParticles& f, const Eigen::VectorXd& dm_dt, const EquationOfState& eos,
-                             int threads);
-
-// The energy a mass scaling of particles [begin, end) by factor (density kept) adds: (factor - 1) sum m (v^2/2 + e).
-double mass_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
-                             Eigen::Index end);
-
-// The internal energy a scaling of particles [begin, end)'s densities by factor (masses kept) adds.
-double density_scaling_energy_J(const FluidParticles& f, const EquationOfState& eos, double factor, Eigen::Index begin,
-                                Eigen::Index end);
-
 // d/dt of the stored energy at fixed particles while the drying ramps P_T and L_ref (drying.hpp):
-// dP_T/dt sum m (1/rho0 - 1/rho) + c (1 - X) d(ramp)/dt sum k_wc (l - L_ref) l0.
-double drive_power_W(const FluidParticles& f, const EquationOfState& eos, double turgor_rate_Pa_s,
-                     double contraction_times_l0_N_m, double L_ref_shortening_rate_1_s);
+// dP_T/dt d(stored)/dP_T (the fluid's, fluid_model.hpp) + c (1 - X) d(ramp)/dt sum k_wc (l - L_ref) l0.
+double drive_power_W(double stored_energy_per_turgor_m3, double turgor_rate_Pa_s, double contraction_times_l0_N_m,
+                     double L_ref_shortening_rate_1_s);
 
 // Stored energy now - at t = 0 (initial_J) - what the flows and losses put in, each by its sign in the
 // table: zero for an exact integration of the model.

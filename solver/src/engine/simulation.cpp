@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/containment.hpp"
+#include "engine/leapfrog.hpp"
 #include "engine/periodic_slab.hpp"
 #include "engine/step_checks.hpp"
 #include "engine/strain_gauge.hpp"
@@ -13,12 +14,7 @@
 #include "parallel/cell_blocks.hpp"
 #include "parallel/threads.hpp"
 #include "physics/drying.hpp"
-#include "physics/mass_transfer.hpp"
 #include "physics/plates.hpp"
-#include "physics/pressure_closure.hpp"
-#include "physics/pressure_coupling.hpp"
-#include "physics/volume_closure.hpp"
-#include "physics/wall_fluid.hpp"
 
 namespace cellsim {
 namespace {
@@ -51,67 +47,6 @@ PropertyFactors property_factors(const Params& p, const Tissue& tissue) {
   return draw_property_factors(law, tissue.wall_x, tissue.mesh, tissue.cells.cell_of_wall(), tissue.cells.count());
 }
 
-// The per-particle loops of a step, for particles [begin, end) (one block of for_blocks). Functions
-// of their own, with the scalars as value parameters: inside a lambda that other threads also run,
-// the compiler would re-read them after every store and not vectorise.
-
-// Eq 11 for the fluid particles [begin, end) of a cell of n fluid particles and wall area area_m2,
-// and their share of the density rate (Eq 9).
-void mass_rates(const FluidParticles& f, const Eigen::VectorXd& pressure, double area_m2, int n, double Lp_m_per_s_Pa,
-                double osmotic_Pa, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& dm_dt,
-                Eigen::VectorXd& drho_dt) {
-  for (Eigen::Index i = begin; i < end; ++i) {
-    dm_dt[i] = mass_rate(area_m2, Lp_m_per_s_Pa, f.rho[i], n, pressure[i], osmotic_Pa);
-    drho_dt[i] = density_rate(drho_dt[i], f.rho[i], f.m[i], dm_dt[i]);
-  }
-}
-
-// Half a kick of the fluid: velocity by force / mass, and (density_too: time.density_update = kick)
-// density and mass by their rates.
-void kick_fluid(double half_dt, const Eigen::Matrix3Xd& force, const Eigen::VectorXd& drho_dt,
-                const Eigen::VectorXd& dm_dt, bool density_too, Eigen::Index begin, Eigen::Index end,
-                Eigen::VectorXd& kick_factor, FluidParticles& f) {
-  const Eigen::Index count = end - begin;
-  kick_factor.segment(begin, count) = half_dt / f.m.segment(begin, count).array();  // packed divisions
-  for (Eigen::Index i = begin; i < end; ++i) f.v.col(i) += kick_factor[i] * force.col(i);
-  if (!density_too) return;
-  f.rho.segment(begin, count) += half_dt * drho_dt.segment(begin, count);
-  f.m.segment(begin, count) += half_dt * dm_dt.segment(begin, count);
-}
-
-// The drift of density and mass over dt (time.density_update = drift): Eq 10's rate plus Eq 9's share
-// of Eq 11, with the mass by Eq 11.
-void drift_density(double dt, const Eigen::VectorXd& continuity_rate, const Eigen::VectorXd& dm_dt, Eigen::Index begin,
-                   Eigen::Index end, FluidParticles& f) {
-  for (Eigen::Index i = begin; i < end; ++i) {
-    f.rho[i] += dt * density_rate(continuity_rate[i], f.rho[i], f.m[i], dm_dt[i]);
-    f.m[i] += dt * dm_dt[i];
-  }
-}
-
-// y *= factor, for entries [begin, end).
-void scale(double factor, Eigen::Index begin, Eigen::Index end, Eigen::VectorXd& y) {
-  y.segment(begin, end - begin) *= factor;
-}
-
-// y += factor * rate, for columns [begin, end) (a wall kick, or a drift).
-void add_scaled(double factor, const Eigen::Matrix3Xd& rate, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& y) {
-  y.middleCols(begin, end - begin) += factor * rate.middleCols(begin, end - begin);
-}
-
-// The drift of columns [begin, end), x += dt v; returns the largest |v|^2, read 256 columns at a time
-// while they are still in cache (the bound on how far the step moved the particles).
-double drift_columns(double dt, const Eigen::Matrix3Xd& v, Eigen::Index begin, Eigen::Index end, Eigen::Matrix3Xd& x) {
-  constexpr Eigen::Index kChunk = 256;
-  double v2 = 0;
-  for (Eigen::Index c0 = begin; c0 < end; c0 += kChunk) {
-    const Eigen::Index c1 = std::min(c0 + kChunk, end);
-    add_scaled(dt, v, c0, c1, x);
-    v2 = std::max(v2, v.middleCols(c0, c1 - c0).colwise().squaredNorm().maxCoeff());
-  }
-  return v2;
-}
-
 // Adds the coupling's forces on wall particles [begin, end) to their forces, and returns the sum of
 // their push along their unit normals (packed norms and divisions), for the wall pressure.
 double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& vertex_normal, Eigen::Index begin,
@@ -136,11 +71,10 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
                    lamella_law(p, tissue.wall_particle_area_m2)},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
-      lj_{*p.r0_m, 0.0, p.repulsion_f0_N_m, p.attraction_f0_N_m},
+      fluid_(make_fluid_model(p, tissue.cells, factors)),
       plate_law_(plate_law(p)),
       plate_motion_(plate_motion(p)),
       bond_law_(make_bond_law(p, factors)),
-      drift_density_(p.density_update == kDensityDrift),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
   s_.fluid.x = tissue.fluid_x;
   s_.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
@@ -153,13 +87,6 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   s_.lamella_intact.assign(lamella_.size(), 1);
   s_.lamella_peak_opening_m.assign(lamella_.size(), 0.0);
   s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);
-  if (p.viscosity_cv > 0)  // each cell's fluid its own viscosity (heterogeneity.hpp)
-    for (int c = 0; c < cells_.count(); ++c)
-      fluid_viscosity_Pa_s_.insert(fluid_viscosity_Pa_s_.end(), static_cast<std::size_t>(cells_.fluid_count(c)),
-                                   p.viscosity_Pa_s * factors.viscosity[static_cast<std::size_t>(c)]);
-  largest_viscosity_Pa_s_ = fluid_viscosity_Pa_s_.empty()
-                                ? p.viscosity_Pa_s
-                                : *std::max_element(fluid_viscosity_Pa_s_.begin(), fluid_viscosity_Pa_s_.end());
   if (cells_.count() > 1)
     neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
@@ -186,9 +113,19 @@ void Simulation::start_energy_account() {
 
 EnergyValues Simulation::energy_terms_now() const {
   const bool tissue = cells_.count() > 1;
-  return energy_terms(s_, {mesh_, bond_law_, contraction_ramp(), bending_,
-                            p_.coupling_model == kPressure ? nullptr : &lj_, neighbours_.fluid_wall(), plate_law_, eos(),
-                            tissue ? &contact_law_ : nullptr, &neighbours_.wall_wall(), &lamella_});
+  const FluidContext fluid_now = fluid_context();
+  return energy_terms(s_, {*fluid_, fluid_now, mesh_, bond_law_, contraction_ramp(), bending_, plate_law_,
+                           tissue ? &contact_law_ : nullptr, &neighbours_.wall_wall(), &lamella_});
+}
+
+FluidContext Simulation::fluid_context() const {
+  return {surface_, neighbours_, cells_, eos(), Lp_m_per_s_Pa_, threads_};
+}
+
+const SphFluid& Simulation::sph_fluid() const {
+  const auto* sph = dynamic_cast<const SphFluid*>(fluid_.get());
+  if (!sph) throw std::logic_error("this case's fluid is not SPH (fluid_model.hpp)");
+  return *sph;
 }
 
 double Simulation::contraction_ramp() const {
@@ -216,10 +153,10 @@ void Simulation::step() {
   drift(p_.dt_s);
   follow_lateral_stress(p_.dt_s);
   timer_.lap(Phase::Integration);
-  compute_rates(drift_density_ ? p_.dt_s : 0.0);
+  compute_rates(fluid_->density_in_drift() ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
-  if (s_.stage == Stage::Drying) apply_pressure_closure();
-  if (s_.stage == Stage::Compression) apply_volume_closure();
+  if (s_.stage == Stage::Drying) fluid_->apply_drying_closure(s_, fluid_context(), cell_wall_pressure_Pa_);
+  if (s_.stage == Stage::Compression) fluid_->apply_compression_closure(s_, fluid_context());
   // compression.unload_at_strain: once the cell reaches it, the top plate turns back (plate_motion.hpp).
   if (awaits_turn(s_.plates, plate_motion_) && nominal_strain() >= *plate_motion_.turn_at_strain)
     turn_top_plate(s_.plates, s_.time_s);
@@ -235,10 +172,11 @@ void Simulation::compute_rates(double density_step_s) {
   timer_.lap(Phase::Geometry);
   update_neighbours();
   timer_.lap(Phase::Neighbours);
-  if (density_step_s > 0) advance_density(density_step_s);
+  if (density_step_s > 0) fluid_->advance_density(s_, fluid_context(), density_step_s, energy_power_W_);
   timer_.lap(Phase::DensityDrift);
-  fluid_terms();
-  mass_transfer();
+  fluid_->compute_forces(s_, fluid_context(), energy_power_W_);
+  timer_.lap(Phase::FluidPairs);
+  fluid_->transfer_mass(s_, fluid_context(), energy_power_W_);
   timer_.lap(Phase::MassTransfer);
   wall_force_.resize(3, s_.wall.size());
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
@@ -265,60 +203,13 @@ void Simulation::update_geometry() {
     throw NumericalFailure(msg.str());
   }
   s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
-  // The wall-fluid pair list's cut-off (either coupling): the kernel's support, or LJ's r_c.
-  lj_.cutoff_m = p_.coupling_model == kPressure ? 2.0 * s_.smoothing_length_m
-                                                : std::max(lj_.r0_m, p_.attraction_cutoff_over_h * s_.smoothing_length_m);
+  fluid_wall_cutoff_m_ = fluid_->follow_smoothing_length(s_.smoothing_length_m);
 }
 
 void Simulation::update_neighbours() {
-  neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, lj_.cutoff_m, threads_, moved_since_lists_m_,
+  neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, fluid_wall_cutoff_m_, threads_, moved_since_lists_m_,
                      s_.box);  // the period of the moment: a dried slab's has shrunk from the one built
   moved_since_lists_m_ = 0;
-}
-
-// time.density_update = drift (density_update.hpp): the density and mass advance by dt from the
-// continuity rates at the drifted positions and the half-step velocities (Eq 10 with delta-SPH, the
-// pressure coupling's wall term), and Eq 11's rates of the last force evaluation; the energy these
-// carry (Eq 11's water, the diffusion) is counted over the same dt.
-void Simulation::advance_density(double dt) {
-  const CubicSplineKernel kernel(s_.smoothing_length_m);
-  const EquationOfState state_eos = eos();
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, viscosity(), threads_, continuity_,
-                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(), PairTerms::Continuity);
-  if (p_.coupling_model == kPressure) {
-    pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, neighbours_.fluid_wall(), kernel,
-                              pressure_coupling_law(), threads_, pressure_coupling_scratch_);
-    add_pressure_coupling_density_rates(s_.fluid, s_.wall, neighbours_.fluid_wall(), pressure_coupling_scratch_,
-                                        threads_, continuity_.drho_dt);
-  }
-  s_.energy.integral[kMassTransfer] += dt * energy_power_W_[kMassTransfer];
-  s_.energy.integral[kDensityDiffusion] += dt * continuity_.density_diffusion_W;
-  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    drift_density(dt, continuity_.drho_dt, dm_dt_, begin, end, s_.fluid);
-  });
-}
-
-// Pressure (Eq 3) and viscous (Eq 4) terms, and (time.density_update = kick) continuity (Eq 10).
-void Simulation::fluid_terms() {
-  const CubicSplineKernel kernel(s_.smoothing_length_m);
-  const EquationOfState state_eos = eos();
-  fluid_pair_terms(s_.fluid, neighbours_.fluid_fluid(), kernel, state_eos, viscosity(), threads_, fluid_,
-                   p_.density_diffusion * s_.smoothing_length_m * state_eos.sound_speed_m_s(),
-                   drift_density_ ? PairTerms::Forces : PairTerms::All);
-  energy_power_W_[kViscousLoss] = fluid_.viscous_loss_W;
-  energy_power_W_[kDensityDiffusion] = fluid_.density_diffusion_W;
-  timer_.lap(Phase::FluidPairs);
-}
-
-// Eq 11 for every fluid particle, through its own cell's wall, and its share of the density rate (Eq 9).
-void Simulation::mass_transfer() {
-  dm_dt_.resize(s_.fluid.size());
-  const double osmotic_Pa = -turgor_Pa();  // Pi = -P_T (model.md §5)
-  for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
-    mass_rates(s_.fluid, fluid_.pressure, surface_.cell_area_m2[c], static_cast<int>(cells_.fluid_count(c)),
-               Lp_m_per_s_Pa_, osmotic_Pa, begin, end, dm_dt_, fluid_.drho_dt);
-  });
-  energy_power_W_[kMassTransfer] = mass_transfer_power_W(s_.fluid, dm_dt_, eos(), threads_);
 }
 
 // Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
@@ -333,7 +224,8 @@ void Simulation::wall_terms() {
   const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
   const double drying_share = (1.0 - p_.dryness) * ramp_rate;  // d/dt of (1 - X) ramp
   energy_power_W_[kDrive] = ramp_rate == 0 ? 0.0
-                                           : drive_power_W(s_.fluid, eos(), -p_.turgor_Pa * drying_share,
+                                           : drive_power_W(fluid_->stored_energy_per_turgor_m3(s_, eos()),
+                                                           -p_.turgor_Pa * drying_share,
                                                            bonds.contraction_times_l0_N_m,
                                                            p_.contraction_ratio * drying_share);
   timer_.lap(Phase::WallBonds);
@@ -366,33 +258,11 @@ void Simulation::follow_lateral_stress(double dt) {
   }
 }
 
-// The pressure coupling's backstop range follows h (Eq 6) as the fluid spacing does; its pressure is K.
-PressureCouplingLaw Simulation::pressure_coupling_law() const {
-  return {p_.backstop_range_over_dx * s_.smoothing_length_m / *p_.h_over_dx, p_.bulk_modulus_Pa};
-}
-
 // The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 // weights_fresh: advance_density has weighed the pressure coupling's pairs at these positions.
 void Simulation::wall_fluid_terms(bool weights_fresh) {
-  energy_power_W_[kBackstopWork] = 0;
-  if (p_.coupling_model == kPressure) {
-    const PairList& pairs = neighbours_.fluid_wall();
-    if (!weights_fresh) {
-      pressure_coupling_weights(s_.fluid.x, s_.wall.x, surface_.vertex_normal, pairs,
-                                CubicSplineKernel(s_.smoothing_length_m), pressure_coupling_law(), threads_,
-                                pressure_coupling_scratch_);
-      if (!drift_density_)
-        add_pressure_coupling_density_rates(s_.fluid, s_.wall, pairs, pressure_coupling_scratch_, threads_,
-                                            fluid_.drho_dt);
-    }
-    energy_power_W_[kBackstopWork] =
-        pressure_coupling_forces(s_.fluid, fluid_.pressure, s_.wall, pairs, threads_, pressure_coupling_scratch_,
-                                 fluid_.force, coupling_on_wall_, backstop_on_wall_);
-  } else {
-    wall_fluid_forces(s_.fluid.x, s_.wall.x, neighbours_.fluid_wall(), lj_, threads_, fluid_.force, coupling_on_wall_,
-                      lj_scratch_);
-  }
+  fluid_->couple_to_wall(s_, fluid_context(), weights_fresh, coupling_on_wall_, backstop_on_wall_, energy_power_W_);
   const std::vector<double> outward = sum_by_cell(threads_, cells_.wall, [&](Eigen::Index begin, Eigen::Index end) {
     return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
   });
@@ -403,13 +273,6 @@ void Simulation::wall_fluid_terms(bool weights_fresh) {
     outward_sum += outward[c];
   }
   s_.wall_pressure_Pa = outward_sum / surface_.area_m2;
-}
-
-std::vector<double> Simulation::cell_mean_fluid_pressure_Pa() const {
-  std::vector<double> mean(static_cast<std::size_t>(cells_.count()));
-  for (int c = 0; c < cells_.count(); ++c)
-    mean[c] = fluid_.pressure.segment(cells_.fluid[c], cells_.fluid_count(c)).mean();
-  return mean;
 }
 
 // Eq 22 during compression; the first contact of the top plate starts the plate strain.
@@ -424,71 +287,23 @@ void Simulation::plate_terms() {
 }
 
 void Simulation::kick(double half_dt) {
-  add_half_kick(energy_power_W_, half_dt, !drift_density_, s_.energy);
-  kick_factor_.resize(s_.fluid.size());
-  for_blocks(threads_, s_.fluid.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    kick_fluid(half_dt, fluid_.force, fluid_.drho_dt, dm_dt_, !drift_density_, begin, end, kick_factor_, s_.fluid);
-  });
+  add_half_kick(energy_power_W_, half_dt, !fluid_->density_in_drift(), s_.energy);
+  fluid_->kick(s_, half_dt, threads_);
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
     add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
   });
 }
 
 void Simulation::drift(double dt) {
-  const auto largest = [](double a, double b) { return std::max(a, b); };
-  const double fluid_v2 = reduce_blocks<double>(
-      threads_, s_.fluid.size(),
-      [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.fluid.v, begin, end, s_.fluid.x); }, largest);
+  const double fluid_v2 = fluid_->drift(s_, dt, threads_);
   const double wall_v2 = reduce_blocks<double>(
       threads_, s_.wall.size(),
-      [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.wall.v, begin, end, s_.wall.x); }, largest);
+      [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.wall.v, begin, end, s_.wall.x); },
+      [](double a, double b) { return std::max(a, b); });
   moved_since_lists_m_ += dt * std::sqrt(std::max(fluid_v2, wall_v2));
   s_.time_s += dt;
   Plates& plates = s_.plates;
   if (plates.active) plates.top_z_m = top_plate_z_m(plates, plate_motion_, s_.time_s);
-}
-
-// The wall-pressure closure (pressure_closure.hpp), each cell on its own: during drying only.
-void Simulation::apply_pressure_closure() {
-  const Eigen::VectorXd& P = fluid_.pressure;
-  const std::vector<double> pressure_sum = sum_by_cell(
-      threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) { return P.segment(begin, end - begin).sum(); });
-  std::vector<double> factor(pressure_sum.size());
-  bool any = false;
-  for (int c = 0; c < cells_.count(); ++c) {
-    const double mean_pressure = pressure_sum[c] / static_cast<double>(cells_.fluid_count(c));
-    factor[c] = pressure_closure_factor(cell_wall_pressure_Pa_[c], mean_pressure, p_.dt_s, p_.pressure_closure_time_s);
-    any = any || factor[c] != 1.0;
-  }
-  if (!any) return;
-  const EquationOfState state_eos = eos();
-  for (int c = 0; c < cells_.count(); ++c)
-    s_.energy.integral[kPressureClosure] += mass_scaling_energy_J(s_.fluid, state_eos, factor[c], cells_.fluid[c], cells_.fluid[c + 1]);
-  for_cell_blocks(threads_, cells_.fluid, [&](int c, Eigen::Index begin, Eigen::Index end) {
-    scale(factor[c], begin, end, s_.fluid.m);
-  });
-}
-
-std::vector<double> Simulation::cell_volume_ratios() const {
-  const std::vector<double> sph_volume = sum_by_cell(threads_, cells_.fluid, [&](Eigen::Index begin, Eigen::Index end) {
-    return (s_.fluid.m.segment(begin, end - begin).array() / s_.fluid.rho.segment(begin, end - begin).array()).sum();
-  });
-  std::vector<double> ratio(sph_volume.size());
-  for (std::size_t c = 0; c < ratio.size(); ++c) ratio[c] = sph_volume[c] / surface_.cell_volume_m3[c];
-  return ratio;
-}
-
-// The volume closure (volume_closure.hpp), each cell on its own: during compression only.
-void Simulation::apply_volume_closure() {
-  if (!(*p_.volume_closure_time_s > 0) || s_.start_volume_ratio.empty()) return;
-  const std::vector<double> ratio = cell_volume_ratios();
-  const EquationOfState state_eos = eos();
-  for (int c = 0; c < cells_.count(); ++c) {
-    const double factor = volume_closure_factor(ratio[c], s_.start_volume_ratio[c], p_.dt_s, *p_.volume_closure_time_s);
-    s_.energy.integral[kVolumeClosure] += density_scaling_energy_J(s_.fluid, state_eos, factor, cells_.fluid[c],
-                                                           cells_.fluid[c + 1]);
-    s_.fluid.rho.segment(cells_.fluid[c], cells_.fluid_count(c)) *= factor;
-  }
 }
 
 void Simulation::start_at_rest() {
@@ -515,12 +330,10 @@ void Simulation::check_state() const {
   if (!unsound.empty()) throw NumericalFailure(where() + ": " + unsound);
 }
 
-// model.md §7: dt must stay under the CFL limits (the constant wall-spring limit is checked once, in the
-// constructor).
+// model.md §7: dt must stay under the fluid's limits (the constant wall-spring limit is checked once, in
+// the constructor).
 void Simulation::check_time_step() const {
-  const std::string violation = time_step_violation(s_.fluid, fluid_.force, s_.smoothing_length_m,
-                                                    eos().sound_speed_m_s(), largest_viscosity_Pa_s_,
-                                                    p_.fluid_density_kg_m3, p_.dt_s, threads_);
+  const std::string violation = fluid_->time_step_violation(s_, fluid_context());
   if (!violation.empty()) throw NumericalFailure(where() + ": " + violation);
 }
 
@@ -582,7 +395,7 @@ void Simulation::start_compression() {
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
   compute_rates();
-  s_.start_volume_ratio = cell_volume_ratios();  // what the volume closure holds (volume_closure.hpp)
+  fluid_->start_compression(s_, fluid_context());
 }
 
 void Simulation::check_restorable(const State& saved) const {

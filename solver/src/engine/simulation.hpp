@@ -2,15 +2,19 @@
 // One run of a tissue (one cell, or several: model.md §10): the state, and the step that advances it
 // (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
 // -> fluid forces -> wall forces -> forces between cells -> wall-fluid forces -> plates -> integrate
-// -> checks.
+// -> checks. The fluid is a model of its own behind fluid_model.hpp (SPH: sph_fluid.hpp); the engine
+// keeps the wall, the contacts between cells, the plates and the order of the step.
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "core/params.hpp"
 #include "core/state.hpp"
 #include "engine/energy_account.hpp"
+#include "engine/fluid_model.hpp"
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
+#include "engine/sph_fluid.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/heterogeneity.hpp"
 #include "geometry/surface.hpp"
@@ -19,14 +23,9 @@
 #include "physics/bending.hpp"
 #include "physics/cell_contact.hpp"
 #include "physics/eos.hpp"
-#include "physics/fluid_pairs.hpp"
-#include "physics/kernel.hpp"
-#include "physics/lennard_jones.hpp"
 #include "physics/plate_motion.hpp"
 #include "physics/plates.hpp"
-#include "physics/pressure_coupling.hpp"
 #include "physics/wall_bonds.hpp"
-#include "physics/wall_fluid.hpp"
 
 namespace cellsim {
 
@@ -52,11 +51,9 @@ class Simulation {
   }
   const WallMesh& mesh() const { return mesh_; }
   const BondLaw& bond_law() const { return bond_law_; }
-  // Eq 4's viscosity: uniform, or each fluid particle its cell's (heterogeneity.hpp).
-  Viscosity viscosity() const {
-    return fluid_viscosity_Pa_s_.empty() ? Viscosity(p_.viscosity_Pa_s)
-                                         : Viscosity(p_.viscosity_Pa_s, fluid_viscosity_Pa_s_.data());
-  }
+  const FluidModel& fluid() const { return *fluid_; }
+  // The SPH fluid of the case; throws std::logic_error if its fluid is another model.
+  const SphFluid& sph_fluid() const;
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
@@ -77,15 +74,14 @@ class Simulation {
     moved_since_lists_m_ = INFINITY;  // the settle moves the particles itself
     compute_rates();
   }
-  const Eigen::Matrix3Xd& fluid_force() const { return fluid_.force; }
+  const Eigen::Matrix3Xd& fluid_force() const { return fluid_->particle_force(); }
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
-  double mean_fluid_pressure_Pa() const { return fluid_.pressure.mean(); }
   void start_at_rest();
 
   // Per cell: the wall pressure (outward push along the normals / the cell's wall area) and the mean
   // fluid pressure, at the last force evaluation.
   const std::vector<double>& cell_wall_pressure_Pa() const { return cell_wall_pressure_Pa_; }
-  std::vector<double> cell_mean_fluid_pressure_Pa() const;
+  std::vector<double> cell_mean_fluid_pressure_Pa() const { return fluid_->cell_mean_pressure_Pa(cells_); }
   const CellRanges& cells() const { return cells_; }
   const std::vector<LamellaBond>& lamella() const { return lamella_; }
   const WallSurface& surface() const { return surface_; }
@@ -99,20 +95,14 @@ class Simulation {
   void compute_rates(double density_step_s = 0);
   void update_geometry();
   void update_neighbours();
-  void advance_density(double dt);
-  void fluid_terms();
-  void mass_transfer();
+  FluidContext fluid_context() const;  // what the fluid reads of the step now
   void wall_terms();
   void cell_contact_terms();
   void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
   void wall_fluid_terms(bool weights_fresh);
-  PressureCouplingLaw pressure_coupling_law() const;
   void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
-  void apply_pressure_closure();
-  void apply_volume_closure();
-  std::vector<double> cell_volume_ratios() const;  // per cell: sum(m/rho) / enclosed volume
   void check_state() const;
   void check_time_step() const;
   void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference
@@ -131,24 +121,16 @@ class Simulation {
   State s_;
   Bending bending_;
   NeighbourLists neighbours_;
-  LennardJones lj_;
+  std::unique_ptr<FluidModel> fluid_;
+  double fluid_wall_cutoff_m_ = 0;  // of the wall-fluid pair list, at the current h (the fluid's choice)
   PlateLaw plate_law_;
   PlateMotion plate_motion_;
   BondLaw bond_law_;
-  std::vector<double> fluid_viscosity_Pa_s_;  // per fluid particle, with heterogeneity.fluid_viscosity_cv (else empty)
-  double largest_viscosity_Pa_s_ = 0;         // of any cell: the viscous time-step limit
 
   // Rates at the current positions.
-  FluidRates fluid_;
-  FluidRates continuity_;  // the continuity pass of time.density_update = drift (its forces are zeros)
-  bool drift_density_;
   Eigen::Matrix3Xd wall_force_, coupling_on_wall_, backstop_on_wall_;
-  Eigen::VectorXd dm_dt_;
   EnergyValues energy_power_W_{};  // of the terms integrated over the kicks, at the current positions
-  Eigen::VectorXd kick_factor_;  // scratch, kept to avoid reallocation
   BondScratch bond_scratch_;
-  WallFluidScratch lj_scratch_;
-  PressureCouplingScratch pressure_coupling_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked

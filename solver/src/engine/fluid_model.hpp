@@ -1,0 +1,78 @@
+#pragma once
+// What the engine asks of a cell's fluid (model.md §2-5, §7), whatever the model behind it: advance its
+// density, compute its own forces and Eq 11's mass transfer, push on the wall, move with the leapfrog,
+// hold its drying and compression closures, say whether dt is within its limits, and give its share of
+// the energy account. The engine keeps the wall, the cells' contacts, the plates and the order of the
+// step (simulation.hpp). The fluid's state lives in State::fluid (saved by io/state_io.hpp); its rates
+// and scratch live in the model. SPH (sph_fluid.hpp) is today's model.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/energy_terms.hpp"
+#include "core/params.hpp"
+#include "core/state.hpp"
+#include "geometry/heterogeneity.hpp"
+#include "geometry/neighbours.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/tissue.hpp"
+#include "physics/eos.hpp"
+
+namespace cellsim {
+
+// What a fluid reads of the rest of the step, built by the engine at each call: the equation of state
+// at the turgor of the moment, L_p of the stage.
+struct FluidContext {
+  const WallSurface& surface;
+  const NeighbourLists& neighbours;
+  const CellRanges& cells;
+  EquationOfState eos;
+  double Lp_m_per_s_Pa;
+  int threads;
+};
+
+class FluidModel {
+ public:
+  virtual ~FluidModel() = default;
+
+  // The cut-off of the wall-fluid pair list at smoothing length h_m (Eq 6), kept for the forces.
+  virtual double follow_smoothing_length(double h_m) = 0;
+  // time.density_update = drift: density and mass by dt at the drifted positions, before the forces.
+  virtual bool density_in_drift() const = 0;
+  // The methods given power_W write there the powers of their terms of the energy account
+  // (core/energy_terms.hpp), which the engine's kicks integrate.
+  virtual void advance_density(State& s, const FluidContext& c, double dt, const EnergyValues& power_W) = 0;
+  // The fluid's own forces and rates at the current positions, then Eq 11's mass transfer.
+  virtual void compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) = 0;
+  virtual void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) = 0;
+  // The forces between fluid and wall: on the fluid, its own; on the wall, into on_wall (its share
+  // beyond the fluid's pressure, the pressure coupling's backstop, into backstop_on_wall as well).
+  // weights_fresh: advance_density already weighed the wall pairs at these positions.
+  virtual void couple_to_wall(State& s, const FluidContext& c, bool weights_fresh, Eigen::Matrix3Xd& on_wall,
+                              Eigen::Matrix3Xd& backstop_on_wall, EnergyValues& power_W) = 0;
+  // Half a kick and a drift of the fluid; the drift returns the largest |v|^2 (for the neighbour lists).
+  virtual void kick(State& s, double half_dt, int threads) = 0;
+  virtual double drift(State& s, double dt, int threads) = 0;
+  // The closures of model.md §4-5: drying holds the fluid's pressure to the wall's (per cell), compression
+  // holds each cell's fluid volume to its enclosed volume as it was when compression started.
+  virtual void apply_drying_closure(State& s, const FluidContext& c, const std::vector<double>& cell_wall_pressure_Pa) = 0;
+  virtual void start_compression(State& s, const FluidContext& c) = 0;
+  virtual void apply_compression_closure(State& s, const FluidContext& c) = 0;
+  // "" if time.dt_ns is within the fluid's limits at this state, else which it exceeds (step_checks.hpp).
+  virtual std::string time_step_violation(const State& s, const FluidContext& c) const = 0;
+  // Its terms of the stored energy: kinetic (the fluid's part), internal (Eq 7), the coupling's potential.
+  virtual void stored_energy(const State& s, const FluidContext& c, EnergyValues& e) const = 0;
+  // d(stored energy)/d(P_T) at fixed particles: what the drying's turgor ramp does to the account.
+  virtual double stored_energy_per_turgor_m3(const State& s, const EquationOfState& eos) const = 0;
+  // Per cell, the mean pressure at the last force evaluation; the force on each fluid particle (none
+  // for a model without particles).
+  virtual std::vector<double> cell_mean_pressure_Pa(const CellRanges& cells) const = 0;
+  virtual const Eigen::Matrix3Xd& particle_force() const = 0;
+};
+
+// The fluid of the case (today: SPH with either coupling, coupling.model).
+std::unique_ptr<FluidModel> make_fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors);
+
+}  // namespace cellsim
