@@ -62,12 +62,12 @@ TEST(FluidModel, ThePressureCouplingStoresNoPotentialOfItsOwn) {
 // coupling, LJ's r_c = max(r0, (r_c/h) h) for Lennard-Jones (model.md §3).
 TEST(FluidModel, TheWallPairsReachAsFarAsItsCoupling) {
   const Built lj, pressure(nlohmann::json{{"coupling", {{"model", "pressure"}}}});
-  const auto lj_fluid = make_fluid_model(lj.p, lj.tissue.cells, PropertyFactors{});
-  const auto pressure_fluid = make_fluid_model(pressure.p, pressure.tissue.cells, PropertyFactors{});
+  SphFluid lj_fluid(lj.p, lj.tissue.cells, PropertyFactors{});
+  SphFluid pressure_fluid(pressure.p, pressure.tissue.cells, PropertyFactors{});
   const double h = 2e-6;
-  EXPECT_EQ(pressure_fluid->follow_smoothing_length(h), 2.0 * h);
-  EXPECT_EQ(lj_fluid->follow_smoothing_length(h), std::max(*lj.p.r0_m, lj.p.attraction_cutoff_over_h * h));
-  EXPECT_EQ(lj_fluid->follow_smoothing_length(1e-12), *lj.p.r0_m);  // never inside r0
+  EXPECT_EQ(pressure_fluid.follow_smoothing_length(h), 2.0 * h);
+  EXPECT_EQ(lj_fluid.follow_smoothing_length(h), std::max(*lj.p.r0_m, lj.p.attraction_cutoff_over_h * h));
+  EXPECT_EQ(lj_fluid.follow_smoothing_length(1e-12), *lj.p.r0_m);  // never inside r0
 }
 
 // Its time-step limit is its own (the wall springs' is the engine's): within it at rest, exceeded when

@@ -5,7 +5,6 @@
 // the energy account. The engine keeps the wall, the cells' contacts, the plates and the order of the
 // step (simulation.hpp). The fluid's state lives in State::fluid (saved by io/state_io.hpp); its rates
 // and scratch live in the model. SPH (sph_fluid.hpp) is today's model.
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,7 +13,6 @@
 #include "core/energy_terms.hpp"
 #include "core/params.hpp"
 #include "core/state.hpp"
-#include "geometry/heterogeneity.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
@@ -71,8 +69,5 @@ class FluidModel {
   virtual std::vector<double> cell_mean_pressure_Pa(const CellRanges& cells) const = 0;
   virtual const Eigen::Matrix3Xd& particle_force() const = 0;
 };
-
-// The fluid of the case (today: SPH with either coupling, coupling.model).
-std::unique_ptr<FluidModel> make_fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors);
 
 }  // namespace cellsim

@@ -1,3 +1,5 @@
+// The step of a run (simulation.hpp): the wall's forces, the contacts between cells and the plates here,
+// the fluid's through its model (fluid_model.hpp), in the order of the model.
 #include "engine/simulation.hpp"
 
 #include <algorithm>
@@ -41,6 +43,11 @@ LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
   return law;
 }
 
+// The case's fluid model (fluid_model.hpp): SPH, with either coupling (coupling.model).
+std::unique_ptr<FluidModel> fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors) {
+  return std::make_unique<SphFluid>(p, cells, factors);
+}
+
 // The seeded factors of the heterogeneous properties (heterogeneity.hpp), from the tissue as built.
 PropertyFactors property_factors(const Params& p, const Tissue& tissue) {
   const HeterogeneityLaw law{p.heterogeneity_seed, p.G_cv, p.thickness_cv, p.viscosity_cv, p.correlation_length_m};
@@ -71,7 +78,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
                    lamella_law(p, tissue.wall_particle_area_m2)},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
-      fluid_(make_fluid_model(p, tissue.cells, factors)),
+      fluid_(fluid_model(p, tissue.cells, factors)),
       plate_law_(plate_law(p)),
       plate_motion_(plate_motion(p)),
       bond_law_(make_bond_law(p, factors)),

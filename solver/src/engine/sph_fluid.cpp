@@ -1,3 +1,5 @@
+// The SPH fluid (sph_fluid.hpp): what the step asks of a fluid (fluid_model.hpp), from Eqs 3-11 and the
+// wall-fluid coupling.
 #include "engine/sph_fluid.hpp"
 
 #include <algorithm>

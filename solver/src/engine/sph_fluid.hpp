@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/fluid_model.hpp"
+#include "geometry/heterogeneity.hpp"
 #include "physics/fluid_pairs.hpp"
 #include "physics/lennard_jones.hpp"
 #include "physics/pressure_coupling.hpp"
