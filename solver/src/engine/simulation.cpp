@@ -179,11 +179,12 @@ void Simulation::compute_rates(double density_step_s) {
   timer_.lap(Phase::Geometry);
   update_neighbours();
   timer_.lap(Phase::Neighbours);
-  if (density_step_s > 0) fluid_->advance_density(s_, fluid_context(), density_step_s, energy_power_W_);
+  const FluidContext fluid_now = fluid_context();  // the positions' surface and lists, the clock's EOS
+  if (density_step_s > 0) fluid_->advance_density(s_, fluid_now, density_step_s, energy_power_W_);
   timer_.lap(Phase::DensityDrift);
-  fluid_->compute_forces(s_, fluid_context(), energy_power_W_);
+  fluid_->compute_forces(s_, fluid_now, energy_power_W_);
   timer_.lap(Phase::FluidPairs);
-  fluid_->transfer_mass(s_, fluid_context(), energy_power_W_);
+  fluid_->transfer_mass(s_, fluid_now, energy_power_W_);
   timer_.lap(Phase::MassTransfer);
   wall_force_.resize(3, s_.wall.size());
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
@@ -191,7 +192,7 @@ void Simulation::compute_rates(double density_step_s) {
   });
   wall_terms();
   cell_contact_terms();
-  wall_fluid_terms(density_step_s > 0);
+  wall_fluid_terms(fluid_now, density_step_s > 0);
   timer_.lap(Phase::WallFluid);
   plate_terms();
   timer_.lap(Phase::Plates);
@@ -268,8 +269,8 @@ void Simulation::follow_lateral_stress(double dt) {
 // The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
 // push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
 // weights_fresh: advance_density has weighed the pressure coupling's pairs at these positions.
-void Simulation::wall_fluid_terms(bool weights_fresh) {
-  fluid_->couple_to_wall(s_, fluid_context(), weights_fresh, coupling_on_wall_, backstop_on_wall_, energy_power_W_);
+void Simulation::wall_fluid_terms(const FluidContext& fluid_now, bool weights_fresh) {
+  fluid_->couple_to_wall(s_, fluid_now, weights_fresh, coupling_on_wall_, backstop_on_wall_, energy_power_W_);
   const std::vector<double> outward = sum_by_cell(threads_, cells_.wall, [&](Eigen::Index begin, Eigen::Index end) {
     return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
   });

@@ -99,7 +99,7 @@ class Simulation {
   void wall_terms();
   void cell_contact_terms();
   void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
-  void wall_fluid_terms(bool weights_fresh);
+  void wall_fluid_terms(const FluidContext& fluid_now, bool weights_fresh);
   void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
