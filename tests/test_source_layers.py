@@ -60,16 +60,19 @@ def test_source_files_the_docs_name_exist(root):
 # The laws only a fluid model uses (engine/fluid_model.hpp): the engine's step reaches them through it.
 FLUID_LAWS = {"physics/fluid_pairs.hpp", "physics/wall_fluid.hpp", "physics/pressure_coupling.hpp",
               "physics/mass_transfer.hpp", "physics/pressure_closure.hpp", "physics/volume_closure.hpp",
-              "physics/lennard_jones.hpp", "physics/kernel.hpp", "physics/sph_terms.hpp"}
+              "physics/lennard_jones.hpp", "physics/kernel.hpp", "physics/sph_terms.hpp",
+              "physics/cavity_pressure.hpp"}
 
 
 def test_the_engine_reaches_the_fluid_only_through_its_model(root):
     engine = root / "solver" / "src" / "engine"
-    for name in ("simulation.hpp", "simulation.cpp", "energy_account.hpp", "energy_account.cpp"):
+    for name in ("simulation.hpp", "simulation.cpp", "energy_account.hpp", "energy_account.cpp", "quasi_static.cpp"):
         direct = set(INCLUDE.findall((engine / name).read_text()))
         assert not direct & FLUID_LAWS, f"engine/{name} includes {sorted(direct & FLUID_LAWS)}: a fluid model's laws"
     used = set(INCLUDE.findall((engine / "sph_fluid.cpp").read_text() + (engine / "sph_fluid.hpp").read_text()))
     assert len(used & FLUID_LAWS) >= 6, used  # the fluid's laws are there: the test is not vacuous
+    cavity = set(INCLUDE.findall((engine / "cavity_fluid.cpp").read_text()))
+    assert {"physics/cavity_pressure.hpp", "physics/mass_transfer.hpp"} <= cavity, cavity
 
 
 def analysis_imports(root):

@@ -131,3 +131,37 @@ TEST(CliErrors, ThreadCountOutOfRange) {
                      {"--threads = 100000", "between 1 and"});
   expect_input_error({"run", c, "-o", dir.file("out.h5"), "--threads", "two"}, dir, {"--threads", "'two'"});
 }
+
+// The quasi-static scheme needs a fluid with an equilibrium of its own.
+TEST(CliErrors, QuasiStaticNeedsTheClosedCellFluid) {
+  ScratchDir dir("quasi static sph");
+  const auto c = dir.write("case.json", R"({"time": {"scheme": "quasi_static"}})");
+  expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"time.scheme = quasi_static", "fluid.model = cavity"});
+}
+
+// A closed cell given SPH-only keys away from their defaults runs, with one warning naming them.
+TEST(CliErrors, AClosedCellWarnsOfTheSphKeysItIgnores) {
+  ScratchDir dir("cavity ignores");
+  const auto c = dir.write("case.json", R"({"fluid": {"model": "cavity", "viscosity_Pa_s": 0.5},
+      "cell": {"n_wall": 162, "n_fluid": 100, "diameter_um": 40}, "coupling": {"model": "pressure"},
+      "drying": {"steps": 0}, "compression": {"steps": 0}, "time": {"dt_ns": 0.5}})");
+  const auto r = run_cli({"validate", c}, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"WARNING", "cell.n_fluid", "fluid.viscosity_Pa_s", "coupling.model"})
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("cell.n_wall"), std::string::npos) << r.err;
+}
+
+// A relaxation that does not reach equilibrium within its cap stops the run (exit 3), naming the step
+// and the keys, and leaves only a partial file.
+TEST(CliErrors, ARelaxationOverItsCapStopsTheRun) {
+  ScratchDir dir("relaxation cap");
+  const auto c = dir.write("case.json", R"({"fluid": {"model": "cavity"}, "cell": {"n_wall": 162, "diameter_um": 40},
+      "time": {"scheme": "quasi_static", "dt_ns": 500, "relaxation_max_iterations": 3},
+      "drying": {"dryness": 0.5, "steps": 10}, "compression": {"steps": 0}})");
+  const auto r = run_cli({"run", c, "-o", dir.file("out.h5"), "--quiet"}, dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  for (const char* m : {"did not reach equilibrium", "time.relaxation_max_iterations = 3", "step 1"})
+    EXPECT_NE(r.err.find(m), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("out.h5")));
+}

@@ -102,7 +102,15 @@ cellsim::Params load(const Args& a, bool baseline = false) {
     throw cellsim::InputError("'" + a.command + "' needs a case file (CASE.json)");
   nlohmann::json doc = a.case_path.empty() ? nlohmann::json::object() : cellsim::read_case_file(a.case_path);
   for (const auto& o : a.overrides) cellsim::apply_override(doc, o);
-  return cellsim::validate_case(doc);
+  const cellsim::Params p = cellsim::validate_case(doc);
+  const std::vector<std::string> ignored = cellsim::keys_the_case_ignores(doc, p);
+  if (!ignored.empty()) {
+    std::string keys;
+    for (const auto& key : ignored) keys += (keys.empty() ? "" : ", ") + key;
+    std::cerr << "cellsim: WARNING: this case's fluid.model and time.scheme do not read " << keys
+              << " (given away from the default; ignored)\n";
+  }
+  return p;
 }
 
 // `cellsim bench`: one case, or with --sizes the case at the three resolution levels and as tissues of

@@ -8,6 +8,7 @@
 
 #include "cli/progress.hpp"
 #include "core/errors.hpp"
+#include "engine/quasi_static.hpp"
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
 #include "engine/steady_state.hpp"
@@ -22,7 +23,8 @@ namespace {
 // Steps, records and snapshots for one stage, until `steps` or until done() says stop. done() is
 // asked after every step, with the record taken at that step (nullptr if none). A record and a
 // snapshot are taken at the stage's last step whatever the intervals.
-void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(const Record*)>& done,
+void run_stage(Simulation& sim, const std::function<void()>& step, std::int64_t steps,
+               const std::function<bool(const Record*)>& done,
                ResultFile& out, std::vector<Record>& records, Progress& progress, const char* name,
                const std::function<double()>& reached = [] { return 0.0; }) {
   const Params& p = sim.params();
@@ -32,7 +34,7 @@ void run_stage(Simulation& sim, std::int64_t steps, const std::function<bool(con
     return &records.back();
   };
   for (std::int64_t n = 1; n <= steps; ++n) {
-    sim.step();
+    step();
     const Record* recorded = n % p.record_every == 0 ? take_record() : nullptr;
     const bool last = n == steps || done(recorded);
     if (last && !recorded) take_record();
@@ -101,6 +103,8 @@ void run_case(const Params& p, const RunOptions& options) {
   }
   Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);
+  // time.scheme: a leapfrog step, or a step of loads and a relaxation to equilibrium (quasi_static.hpp).
+  const std::function<void()> step = [&] { p.time_scheme == kQuasiStatic ? quasi_static_step(sim) : sim.step(); };
   if (!options.from_path.empty()) {  // a saved state that does not fit this case: refused before any output
     try {
       sim.check_restorable(saved.state);
@@ -160,7 +164,7 @@ void run_case(const Params& p, const RunOptions& options) {
     const std::int64_t compression_steps = *p.compression_steps;
     Progress progress(drying_steps + compression_steps, p.progress_interval_s, options.quiet);
     if (drying_steps > 0) {
-      run_stage(sim, drying_steps, steady_reached, out, records, progress, "drying");
+      run_stage(sim, step, drying_steps, steady_reached, out, records, progress, "drying");
       if (drying.steady && !options.quiet)
         std::fprintf(stderr, "cellsim: drying reached steady state at t = %.2f us (step %lld)\n",
                      drying.steady_time_s * 1e6, static_cast<long long>(sim.state().step));
@@ -170,7 +174,7 @@ void run_case(const Params& p, const RunOptions& options) {
     if (compression_steps > 0) {
       sim.start_compression();
       if (p.end_strain && !p.unload_at_strain) progress.aim("strain", *p.end_strain);
-      run_stage(sim, compression_steps, strain_reached, out, records, progress, "compression",
+      run_stage(sim, step, compression_steps, strain_reached, out, records, progress, "compression",
                 [&] { return sim.nominal_strain(); });
       compression = {true, asked_end(p), strain_reached(nullptr), compression_steps, sim.nominal_strain()};
       if (!compression.warning().empty())

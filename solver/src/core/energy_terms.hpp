@@ -22,7 +22,7 @@ enum class EnergySource { State, Power, DensityPower, Jump };
 enum EnergyTermId : std::size_t {
   kKinetic, kInternal, kWallStiff, kWallContraction, kWallBending, kCouplingPotential, kPlateSprings, kContact,
   kLamella, kPlateWork, kViscousLoss, kDampingLoss, kMassTransfer, kPressureClosure, kDrive, kDensityDiffusion,
-  kBackstopWork, kVolumeClosure, kPlasticLoss, kLamellaLoss, kEnergyTermCount
+  kBackstopWork, kVolumeClosure, kPlasticLoss, kLamellaLoss, kRelaxationLoss, kEnergyTermCount
 };
 
 struct EnergyTerm {
@@ -82,6 +82,10 @@ inline constexpr std::array<EnergyTerm, kEnergyTermCount> kEnergyTerms{{
     {kLamellaLoss, "lamella_loss_J", nullptr, EnergyRole::Loss, EnergySource::State, "lamella loss",
      "energy the middle lamella's softening and breaking took since t = 0 (its bonds' largest openings; G_f a_w "
      "for each bond separated)"},
+    {kRelaxationLoss, "relaxation_loss_J", "energy_relaxation_loss_J", EnergyRole::Loss, EnergySource::Jump,
+     "relaxation loss",
+     "energy the quasi-static relaxations took out since t = 0 (time.scheme = quasi_static: FIRE's steering and "
+     "stops, the wall damping at pseudo-velocities; 0 for a dynamic run)"},
 }};
 
 // One value per term, indexed by EnergyTermId.

@@ -11,6 +11,14 @@ using Choice = int;  // the index of a choice key's name (case_schema.cpp lists 
 // coupling.model (model.md §4): how the wall and the fluid push on each other.
 enum CouplingModel : Choice { kLennardJones = 0, kPressure = 1 };
 
+// fluid.model (model.md §9): the cell fluid as SPH particles (the paper's), or as a closed cell of one
+// uniform pressure (engine/cavity_fluid.hpp), the quasi-static reference.
+enum FluidModelChoice : Choice { kSphFluid = 0, kCavityFluid = 1 };
+
+// time.scheme: the leapfrog in time (dynamic), or each increment of time a wall at equilibrium
+// (quasi_static: engine/quasi_static.hpp; a cavity fluid only).
+enum TimeScheme : Choice { kDynamic = 0, kQuasiStatic = 1 };
+
 // time.density_update (docs/model.md §7): when the leapfrog advances the density (and mass) of the
 // fluid. auto: kick for lennard_jones (the paper's study as before), drift for pressure.
 enum DensityUpdate : Choice { kDensityAuto = 0, kDensityKick = 1, kDensityDrift = 2 };
@@ -59,6 +67,7 @@ struct Params {
   double correlation_length_m = 0;      // of the wall's factors (0: each bond its own draw)
 
   // fluid, Table 1
+  Choice fluid_model = kSphFluid;
   double viscosity_Pa_s = 0;            // mu, Eq 4
   double bulk_modulus_Pa = 0;           // K, Eq 7
   double eos_exponent = 0;              // 7 in Eq 7
@@ -116,6 +125,9 @@ struct Params {
   // time integration, model.md §7
   double dt_s = 0;
   Choice density_update = kDensityAuto;
+  Choice time_scheme = kDynamic;
+  double equilibrium_tolerance = 0;     // quasi_static: largest wall force / its pressure load to stop at
+  std::int64_t relaxation_max_iterations = 0;  // quasi_static: the cap of one relaxation
 
   // output
   std::int64_t record_every = 0;        // steps between time-series records

@@ -64,6 +64,8 @@ struct State {
   Plates plates;
   PeriodicBox box;  // a periodic tissue's lateral period (model.md §10b); none for a cell or a cluster
   std::vector<double> start_volume_ratio;  // per cell: sum(m/rho) / enclosed volume when compression started
+  // Per cell, a closed cell's fluid mass M_f (fluid.model = cavity: engine/cavity_fluid.hpp); empty for SPH.
+  std::vector<double> cavity_mass_kg;
   std::vector<char> lamella_intact;  // per middle-lamella bond of a tissue: 1 until it separates (model.md §10)
   std::vector<double> lamella_peak_opening_m;  // per bond: its largest opening r - l0 so far (its damage)
   std::vector<double> bond_plastic_elongation_m;  // per wall bond: its plastic slider's elongation (wall_plasticity.hpp)

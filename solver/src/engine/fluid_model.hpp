@@ -3,8 +3,9 @@
 // density, compute its own forces and Eq 11's mass transfer, push on the wall, move with the leapfrog,
 // hold its drying and compression closures, say whether dt is within its limits, and give its share of
 // the energy account. The engine keeps the wall, the cells' contacts, the plates and the order of the
-// step (simulation.hpp). The fluid's state lives in State::fluid (saved by io/state_io.hpp); its rates
-// and scratch live in the model. SPH (sph_fluid.hpp) is today's model.
+// step (simulation.hpp). The fluid's state lives in the State (saved by io/state_io.hpp): SPH's particles
+// in State::fluid, a closed cell's mass in State::cavity_mass_kg; its rates and scratch live in the
+// model. The models: SPH (sph_fluid.hpp) and the closed cell of one uniform pressure (cavity_fluid.hpp).
 #include <string>
 #include <vector>
 
@@ -31,9 +32,24 @@ struct FluidContext {
   int threads;
 };
 
+// What the records read of the fluid (measures.hpp), each the model's own way.
+struct FluidReadings {
+  double mass_kg = 0;
+  double mean_pressure_Pa = 0;     // over the fluid (SPH: the particles' mean)
+  double volume_ratio = 0;         // the fluid's own volume / the enclosed volume (every cell's)
+  double kinetic_energy_J = 0, max_speed_m_s = 0;
+  std::vector<double> cell_mass_kg, cell_mean_pressure_Pa;
+};
+
 class FluidModel {
  public:
   virtual ~FluidModel() = default;
+
+  // The fluid of the tissue as built, at rest at rho0 in walls of this surface.
+  virtual void fill(State& s, const Tissue& tissue, const WallSurface& surface) const = 0;
+  virtual double mass_kg(const State& s) const = 0;
+  virtual FluidReadings readings(const State& s, const CellRanges& cells, const WallSurface& surface,
+                                 const EquationOfState& eos) const = 0;
 
   // The cut-off of the wall-fluid pair list at smoothing length h_m (Eq 6), kept for the forces.
   virtual double follow_smoothing_length(double h_m) = 0;

@@ -15,16 +15,11 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Each cell's volume, mean pressure and fluid mass; a tissue's intact bonds, hull volume and porosity.
-void measure_cells(const State& s, const CellRanges& cells, const WallSurface& surface, const EquationOfState& eos,
+void measure_cells(const State& s, const CellRanges& cells, const WallSurface& surface, const FluidReadings& fluid,
                    Record& r) {
-  const auto& f = s.fluid;
   r.cell_volume_m3 = surface.cell_volume_m3;
-  for (int c = 0; c < cells.count(); ++c) {
-    double pressure_sum = 0;
-    for (Eigen::Index i = cells.fluid[c]; i < cells.fluid[c + 1]; ++i) pressure_sum += eos.pressure(f.rho[i]);
-    r.cell_mean_pressure_Pa.push_back(pressure_sum / static_cast<double>(cells.fluid_count(c)));
-    r.cell_fluid_mass_kg.push_back(f.m.segment(cells.fluid[c], cells.fluid_count(c)).sum());
-  }
+  r.cell_mean_pressure_Pa = fluid.cell_mean_pressure_Pa;
+  r.cell_fluid_mass_kg = fluid.cell_mass_kg;
   const LayerHeights heights = layer_heights(s.wall.x, cells);
   r.cell_centroid_z_m = heights.cell_centroid_z_m;
   r.cell_wall_height_m = heights.cell_height_m;
@@ -200,29 +195,26 @@ void add_energy_account(const EnergyValues& terms, double initial_J, Record& r) 
 }
 
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
-               const Params& p, const EquationOfState& eos, const LoadPartition& load) {
+               const Params& p, const FluidReadings& fluid, const LoadPartition& load) {
   Record r{};
-  measure_cells(s, cells, surface, eos, r);
-  const auto& f = s.fluid;
+  measure_cells(s, cells, surface, fluid, r);
   const auto& w = s.wall;
   r.time_s = s.time_s;
   r.stage = static_cast<double>(s.stage);
   r.step = static_cast<double>(s.step);
-  r.fluid_mass_kg = f.m.sum();
+  r.fluid_mass_kg = fluid.mass_kg;
   r.fluid_mass_ratio = r.fluid_mass_kg / s.initial_fluid_mass_kg;
-  r.max_fluid_speed_m_s = std::sqrt(f.v.colwise().squaredNorm().maxCoeff());
-  double pressure_sum = 0;
-  for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
-  r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : kNaN;
+  r.max_fluid_speed_m_s = fluid.max_speed_m_s;
+  r.mean_pressure_Pa = fluid.mean_pressure_Pa;
   r.area_m2 = surface.area_m2;
   r.volume_m3 = surface.volume_m3;
-  r.fluid_volume_ratio = (f.m.array() / f.rho.array()).sum() / surface.volume_m3;
+  r.fluid_volume_ratio = fluid.volume_ratio;
   r.equivalent_diameter_m = equivalent_diameter_m(r.volume_m3);
   r.smoothing_length_m = s.smoothing_length_m;
   r.cell_height_m = cell_height_m(w.x);
   const Eigen::Vector3d centroid = w.x.rowwise().mean();
   r.equatorial_radius_m = (w.x.topRows<2>().colwise() - centroid.head<2>()).colwise().norm().maxCoeff();
-  r.kinetic_energy_fluid_J = 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
+  r.kinetic_energy_fluid_J = fluid.kinetic_energy_J;
   r.kinetic_energy_wall_J = 0.5 * w.mass_kg * w.v.squaredNorm();
   double strain_sum = 0;
   for (std::size_t b = 0; b < mesh.bonds.size(); ++b) {

@@ -7,6 +7,7 @@
 #include "core/params.hpp"
 #include "core/state.hpp"
 #include "engine/energy_account.hpp"
+#include "engine/fluid_model.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
 #include "geometry/wall_mesh.hpp"
@@ -70,7 +71,7 @@ inline double nominal_strain(double contact_height_m, double height_m) {
 // The record of state s; area, volume and normals come from its wall surface (surface.hpp), the
 // top plate's load partition from the forces of the last step (load_partition.hpp).
 Record measure(const State& s, const WallMesh& mesh, const CellRanges& cells, const WallSurface& surface,
-               const Params& p, const EquationOfState& eos, const LoadPartition& load);
+               const Params& p, const FluidReadings& fluid, const LoadPartition& load);
 
 // Fills in r's energy account from its terms now (energy_account.hpp) and the stored energy at t = 0.
 void add_energy_account(const EnergyValues& terms, double initial_J, Record& r);

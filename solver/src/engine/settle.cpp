@@ -6,6 +6,7 @@
 
 #include "core/errors.hpp"
 #include "engine/measures.hpp"
+#include "engine/quasi_static.hpp"
 #include "engine/simulation.hpp"
 
 namespace cellsim {
@@ -22,9 +23,31 @@ constexpr double kWallPseudoMassScale = 2e5;
 constexpr double kMaxMoveOverSpacing = 0.01;  // no particle moves more than 1 % of dx in one pseudo-step
 constexpr int kMassUpdateEvery = 50;          // pseudo-steps between mass rescalings
 
+// A closed cell (cavity_fluid.hpp) at rest: its wall relaxed under the fresh turgor held (drained, P = P_T0),
+// then each cell's mass rho0 times the volume it encloses (quasi_static.hpp's relaxation).
+SettleReport settle_closed_cells(Simulation& sim, std::int64_t max_iterations) {
+  SettleReport report;
+  const double mass_before = sim.fluid().mass_kg(sim.state());
+  const double volume_before = sim.surface().volume_m3;
+  if (max_iterations > 0) {
+    CavityFluid& cavity = sim.cavity_fluid();
+    cavity.begin_increment(sim.state(), sim.fluid_context(), INFINITY);
+    const Equilibrium eq = relax_wall(sim, sim.params().equilibrium_tolerance, max_iterations);
+    cavity.end_increment(sim.mutable_state(), sim.fluid_context());
+    report.iterations = eq.iterations;
+    report.residual = eq.residual;
+    report.converged = eq.converged;
+  }
+  sim.start_at_rest();
+  report.mass_ratio = sim.fluid().mass_kg(sim.state()) / mass_before;
+  report.volume_ratio = sim.surface().volume_m3 / volume_before;
+  return report;
+}
+
 }  // namespace
 
 SettleReport settle(Simulation& sim, std::int64_t max_iterations, double tolerance) {
+  if (sim.params().fluid_model == kCavityFluid) return settle_closed_cells(sim, max_iterations);
   SettleReport report;
   State& s = sim.mutable_state();
   auto& f = s.fluid;

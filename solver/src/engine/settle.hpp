@@ -5,6 +5,8 @@
 // frozen at rho0 (every particle at P = P_T0, which is where Eq 11 holds it at steady state),
 // fluid and wall positions free, and the fluid masses scaled until the wall carries exactly the
 // fluid pressure (the target of the wall-pressure closure). Not part of the recorded time series.
+// A closed cell (fluid.model = cavity) has no particles to relax: its wall is relaxed under P_T0 held
+// (quasi_static.hpp), to time.equilibrium_tolerance, and its mass is then rho0 times its volume.
 #include <cstdint>
 
 namespace cellsim {
@@ -13,7 +15,7 @@ class Simulation;
 
 struct SettleReport {
   std::int64_t iterations = 0;
-  double residual = 0;        // largest fluid acceleration / (P_T0 / (rho0 dx)) at the end
+  double residual = 0;        // largest fluid acceleration / (P_T0 / (rho0 dx)) at the end (closed cell: quasi_static.hpp's)
   bool converged = false;     // residual <= settle.tolerance
   double mass_ratio = 1;      // fluid mass after / before (the masses the wall-pressure balance asks for)
   double volume_ratio = 1;    // enclosed volume after / before: the fresh cell inflated by its turgor

@@ -43,8 +43,10 @@ LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
   return law;
 }
 
-// The case's fluid model (fluid_model.hpp): SPH, with either coupling (coupling.model).
+// The case's fluid model (fluid_model.hpp, fluid.model): SPH, with either coupling (coupling.model), or the
+// closed cell of one pressure.
 std::unique_ptr<FluidModel> fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors) {
+  if (p.fluid_model == kCavityFluid) return std::make_unique<CavityFluid>(p);
   return std::make_unique<SphFluid>(p, cells, factors);
 }
 
@@ -79,14 +81,12 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       fluid_(fluid_model(p, tissue.cells, factors)),
-      plate_law_(plate_law(p)),
+      plate_law_(cellsim::plate_law(p)),
       plate_motion_(plate_motion(p)),
       bond_law_(make_bond_law(p, factors)),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
-  s_.fluid.x = tissue.fluid_x;
-  s_.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
-  s_.fluid.m = tissue.fluid_mass_kg;
-  s_.fluid.rho = Eigen::VectorXd::Constant(tissue.fluid_x.cols(), p.fluid_density_kg_m3);
+  const WallSurface built = wall_surface(tissue.wall_x, mesh_);
+  fluid_->fill(s_, tissue, built);
   s_.wall.x = tissue.wall_x;
   s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
   s_.wall.mass_kg = tissue.wall_mass_kg;
@@ -97,18 +97,19 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   if (cells_.count() > 1)
     neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
-  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.initial_fluid_mass_kg = fluid_->mass_kg(s_);
   s_.plates.first_contact_top_z_m = std::nan("");
-  const double wall_limit_s =
-      wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
-  if (p_.dt_s > wall_limit_s) {  // known before the first step: bad input, not a blow-up
+  wall_limit_s_ = wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
+  const double wall_limit_s = wall_limit_s_;
+  // Known before the first step: bad input, not a blow-up (a quasi-static step is no leapfrog step).
+  if (p_.time_scheme == kDynamic && p_.dt_s > wall_limit_s) {
     std::ostringstream msg;
     msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
         << wall_limit_s * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.
-  s_.reference_diameter_m = equivalent_diameter_m(wall_surface(tissue.wall_x, mesh_).volume_m3);
+  s_.reference_diameter_m = equivalent_diameter_m(built.volume_m3);
   compute_rates();
   start_energy_account();
 }
@@ -133,6 +134,12 @@ const SphFluid& Simulation::sph_fluid() const {
   const auto* sph = dynamic_cast<const SphFluid*>(fluid_.get());
   if (!sph) throw std::logic_error("this case's fluid is not SPH (fluid_model.hpp)");
   return *sph;
+}
+
+CavityFluid& Simulation::cavity_fluid() {
+  auto* cavity = dynamic_cast<CavityFluid*>(fluid_.get());
+  if (!cavity) throw std::logic_error("this case's fluid is not a closed cell (fluid_model.hpp)");
+  return *cavity;
 }
 
 double Simulation::contraction_ramp() const {
@@ -164,6 +171,10 @@ void Simulation::step() {
   kick(0.5 * p_.dt_s);
   if (s_.stage == Stage::Drying) fluid_->apply_drying_closure(s_, fluid_context(), cell_wall_pressure_Pa_);
   if (s_.stage == Stage::Compression) fluid_->apply_compression_closure(s_, fluid_context());
+  finish_step();
+}
+
+void Simulation::finish_step() {
   // compression.unload_at_strain: once the cell reaches it, the top plate turns back (plate_motion.hpp).
   if (awaits_turn(s_.plates, plate_motion_) && nominal_strain() >= *plate_motion_.turn_at_strain)
     turn_top_plate(s_.plates, s_.time_s);
@@ -171,6 +182,11 @@ void Simulation::step() {
   ++s_.stage_step;
   check_state();
   timer_.lap(Phase::Integration);
+}
+
+void Simulation::advance_loads(double dt) {
+  advance_clock(dt);
+  follow_lateral_stress(dt);
 }
 
 // Forces and rates at the current positions, in the order of the model.
@@ -309,6 +325,10 @@ void Simulation::drift(double dt) {
       [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.wall.v, begin, end, s_.wall.x); },
       [](double a, double b) { return std::max(a, b); });
   moved_since_lists_m_ += dt * std::sqrt(std::max(fluid_v2, wall_v2));
+  advance_clock(dt);
+}
+
+void Simulation::advance_clock(double dt) {
   s_.time_s += dt;
   Plates& plates = s_.plates;
   if (plates.active) plates.top_z_m = top_plate_z_m(plates, plate_motion_, s_.time_s);
@@ -319,7 +339,7 @@ void Simulation::start_at_rest() {
   s_.wall.v.setZero();
   s_.time_s = 0;
   s_.step = s_.stage_step = 0;
-  s_.initial_fluid_mass_kg = s_.fluid.m.sum();
+  s_.initial_fluid_mass_kg = fluid_->mass_kg(s_);
   s_.reference_diameter_m = equivalent_diameter_m(surface_.volume_m3);
   neighbours_.invalidate();
   compute_rates();
@@ -433,6 +453,10 @@ void Simulation::check_restorable(const State& saved) const {
   same("wall velocities", w.v.cols(), w.x.cols());
   same("lamella openings", static_cast<Eigen::Index>(saved.lamella_peak_opening_m.size()),
        static_cast<Eigen::Index>(saved.lamella_intact.size()));
+  same("closed-cell fluid masses", static_cast<Eigen::Index>(saved.cavity_mass_kg.size()),
+       static_cast<Eigen::Index>(s_.cavity_mass_kg.size()));
+  for (double mass : saved.cavity_mass_kg)
+    if (!(mass > 0) || !std::isfinite(mass)) throw InputError("saved state has a closed-cell fluid mass that is not positive");
   if (!saved.bond_plastic_elongation_m.empty())  // empty: saved before the wall could yield
     same("wall bonds", static_cast<Eigen::Index>(saved.bond_plastic_elongation_m.size()),
          static_cast<Eigen::Index>(mesh_.bonds.size()));
@@ -466,7 +490,7 @@ void Simulation::restore(const State& saved) {
 Record Simulation::record() const {
   const LoadPartition load =
       top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, backstop_on_wall_, plate_law_, s_.plates);
-  Record r = measure(s_, mesh_, cells_, surface_, p_, eos(), load);
+  Record r = measure(s_, mesh_, cells_, surface_, p_, fluid_->readings(s_, cells_, surface_, eos()), load);
   add_energy_account(energy_terms_now(), s_.energy.initial_J, r);
   return r;
 }

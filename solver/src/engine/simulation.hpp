@@ -10,6 +10,7 @@
 
 #include "core/params.hpp"
 #include "core/state.hpp"
+#include "engine/cavity_fluid.hpp"
 #include "engine/energy_account.hpp"
 #include "engine/fluid_model.hpp"
 #include "engine/measures.hpp"
@@ -34,6 +35,11 @@ class Simulation {
   Simulation(const Params& p, const Tissue& tissue);
 
   void step();                  // one kick-drift-kick step of dt
+  // A quasi-static step (quasi_static.hpp) moves the loads at fixed particles: the clock by dt, and with
+  // it the plates, the drying ramp and a periodic slab's period; relaxes; then ends as every step does
+  // (the unloading plate's turn, the step counts, the state's checks).
+  void advance_loads(double dt);
+  void finish_step();
   void start_compression();     // switches L_p and places the plates (model.md §6)
   void restore(const State& saved);  // continue from a saved state (same case geometry)
   // Throws InputError unless `saved` fits this case: its particles, bonds and period, every array of
@@ -54,6 +60,9 @@ class Simulation {
   const FluidModel& fluid() const { return *fluid_; }
   // The SPH fluid of the case; throws std::logic_error if its fluid is another model.
   const SphFluid& sph_fluid() const;
+  // The closed-cell fluid of the case, for the quasi-static increments (quasi_static.hpp) and the
+  // settle; throws std::logic_error if its fluid is another model.
+  CavityFluid& cavity_fluid();
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
@@ -77,6 +86,15 @@ class Simulation {
   const Eigen::Matrix3Xd& fluid_force() const { return fluid_->particle_force(); }
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
   void start_at_rest();
+  // For a relaxation of the wall (quasi_static.hpp): its step's stability limit (step_checks.hpp), the
+  // plates' law, the drying ramp now, the powers of the last force evaluation, what the fluid reads of
+  // the step, every term of the energy account now.
+  double wall_spring_limit_s() const { return wall_limit_s_; }
+  const PlateLaw& plate_law() const { return plate_law_; }
+  double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
+  const EnergyValues& power_W() const { return energy_power_W_; }
+  FluidContext fluid_context() const;
+  EnergyValues energy_terms_now() const;
 
   // Per cell: the wall pressure (outward push along the normals / the cell's wall area) and the mean
   // fluid pressure, at the last force evaluation.
@@ -95,7 +113,6 @@ class Simulation {
   void compute_rates(double density_step_s = 0);
   void update_geometry();
   void update_neighbours();
-  FluidContext fluid_context() const;  // what the fluid reads of the step now
   void wall_terms();
   void cell_contact_terms();
   void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
@@ -106,8 +123,7 @@ class Simulation {
   void check_state() const;
   void check_time_step() const;
   void start_energy_account();  // t = 0: the flows start from zero, the stored energy is the reference
-  EnergyValues energy_terms_now() const;
-  double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
+  void advance_clock(double dt);  // time, and the plates with it
   std::string where() const;
 
   int threads_ = 1;
@@ -133,6 +149,7 @@ class Simulation {
   BondScratch bond_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
+  double wall_limit_s_ = 0;  // the wall springs' stability limit of a leapfrog step (step_checks.hpp)
   double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked
   PhaseTimer timer_;
 };

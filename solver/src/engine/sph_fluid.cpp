@@ -3,6 +3,7 @@
 #include "engine/sph_fluid.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/leapfrog.hpp"
 #include "engine/sph_energy.hpp"
@@ -71,6 +72,35 @@ SphFluid::SphFluid(const Params& p, const CellRanges& cells, const PropertyFacto
                              p.viscosity_Pa_s * factors.viscosity[static_cast<std::size_t>(c)]);
   largest_viscosity_Pa_s_ =
       viscosity_Pa_s_.empty() ? p.viscosity_Pa_s : *std::max_element(viscosity_Pa_s_.begin(), viscosity_Pa_s_.end());
+}
+
+// The lattice of the tissue as built, at rest at rho0 (model.md §1).
+void SphFluid::fill(State& s, const Tissue& tissue, const WallSurface&) const {
+  s.fluid.x = tissue.fluid_x;
+  s.fluid.v = Eigen::Matrix3Xd::Zero(3, tissue.fluid_x.cols());
+  s.fluid.m = tissue.fluid_mass_kg;
+  s.fluid.rho = Eigen::VectorXd::Constant(tissue.fluid_x.cols(), p_.fluid_density_kg_m3);
+}
+
+// The particles' sums, their pressures from the density now (Eq 7).
+FluidReadings SphFluid::readings(const State& s, const CellRanges& cells, const WallSurface& surface,
+                                 const EquationOfState& eos) const {
+  const auto& f = s.fluid;
+  FluidReadings r;
+  for (int c = 0; c < cells.count(); ++c) {
+    double pressure_sum = 0;
+    for (Eigen::Index i = cells.fluid[c]; i < cells.fluid[c + 1]; ++i) pressure_sum += eos.pressure(f.rho[i]);
+    r.cell_mean_pressure_Pa.push_back(pressure_sum / static_cast<double>(cells.fluid_count(c)));
+    r.cell_mass_kg.push_back(f.m.segment(cells.fluid[c], cells.fluid_count(c)).sum());
+  }
+  r.mass_kg = f.m.sum();
+  r.max_speed_m_s = std::sqrt(f.v.colwise().squaredNorm().maxCoeff());
+  double pressure_sum = 0;
+  for (Eigen::Index i = 0; i < f.size(); ++i) pressure_sum += eos.pressure(f.rho[i]);
+  r.mean_pressure_Pa = f.size() ? pressure_sum / static_cast<double>(f.size()) : std::nan("");
+  r.volume_ratio = (f.m.array() / f.rho.array()).sum() / surface.volume_m3;
+  r.kinetic_energy_J = 0.5 * (f.v.colwise().squaredNorm().transpose().array() * f.m.array()).sum();
+  return r;
 }
 
 // The wall-fluid pair list's cut-off (either coupling): the kernel's support, or LJ's r_c.

@@ -20,6 +20,10 @@ class SphFluid final : public FluidModel {
   // factors.viscosity: each cell's fluid its own viscosity (heterogeneity.viscosity_cv), else uniform.
   SphFluid(const Params& p, const CellRanges& cells, const PropertyFactors& factors);
 
+  void fill(State& s, const Tissue& tissue, const WallSurface& surface) const override;
+  double mass_kg(const State& s) const override { return s.fluid.m.sum(); }
+  FluidReadings readings(const State& s, const CellRanges& cells, const WallSurface& surface,
+                         const EquationOfState& eos) const override;
   double follow_smoothing_length(double h_m) override;
   bool density_in_drift() const override { return drift_density_; }
   void advance_density(State& s, const FluidContext& c, double dt, const EnergyValues& power_W) override;

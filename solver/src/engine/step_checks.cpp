@@ -92,6 +92,7 @@ std::string time_step_violation(const FluidParticles& f, const Eigen::Matrix3Xd&
 
 bool fluid_is_sound(const FluidParticles& f, Eigen::Index begin, Eigen::Index end) {
   const Eigen::Index count = end - begin;
+  if (count == 0) return true;  // a closed-cell fluid has no particles
   return all_finite(f.x.middleCols(begin, count)) && all_finite(f.v.middleCols(begin, count)) &&
          all_finite(f.rho.segment(begin, count)) && all_finite(f.m.segment(begin, count)) &&
          f.rho.segment(begin, count).minCoeff() > 0 && f.m.segment(begin, count).minCoeff() > 0;
@@ -108,7 +109,9 @@ std::string unsound_particle(const State& s, int threads) {
       threads, s.fluid.size(), [&](Eigen::Index b, Eigen::Index e) { return fluid_is_sound(s.fluid, b, e); }, both);
   const bool wall_finite = reduce_blocks<bool>(
       threads, s.wall.size(), [&](Eigen::Index b, Eigen::Index e) { return wall_is_finite(s.wall, b, e); }, both);
-  if (fluid_sound && wall_finite) return "";
+  bool cavity_sound = true;
+  for (double mass : s.cavity_mass_kg) cavity_sound = cavity_sound && std::isfinite(mass) && mass > 0;
+  if (fluid_sound && wall_finite && cavity_sound) return "";
   // Something is wrong: find the first particle at fault, in the order of the quantities.
   const auto first_nonfinite = [](const char* kind, const Eigen::Matrix3Xd& m, const char* quantity) -> std::string {
     for (Eigen::Index i = 0; i < m.cols(); ++i)
@@ -126,6 +129,12 @@ std::string unsound_particle(const State& s, int threads) {
       std::ostringstream msg;
       msg << "fluid particle " << i << " has density " << f.rho[i] << " kg/m^3 and mass " << f.m[i]
           << " kg (both must be positive and finite)";
+      return msg.str();
+    }
+  for (std::size_t c = 0; c < s.cavity_mass_kg.size(); ++c)
+    if (!std::isfinite(s.cavity_mass_kg[c]) || !(s.cavity_mass_kg[c] > 0)) {
+      std::ostringstream msg;
+      msg << "the fluid of closed cell " << c << " has mass " << s.cavity_mass_kg[c] << " kg (it must be positive)";
       return msg.str();
     }
   return "";

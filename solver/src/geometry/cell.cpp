@@ -137,6 +137,7 @@ Cell build_cell(const Params& p, const CellShape& shape, double fluid_spacing) {
   if (shape.onto_faces)
     for (Eigen::Index k = 0; k < sphere.cols(); ++k) cell.wall_x.col(k) = shape.onto_faces(sphere.col(k));
   cell.mesh = build_wall_mesh(cell.wall_x, triangles);
+  if (p.fluid_model == kCavityFluid) return cell;  // a closed cell of one pressure: no particles
   // The fluid: the lattice points the sphere of rc would hold, less those the faces take.
   double farthest = 0;
   const Eigen::Matrix3Xd lattice =

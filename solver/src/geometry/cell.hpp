@@ -48,7 +48,8 @@ struct Cell {
 
 // One cell of a resolved case (resolve_derived_geometry), centred on the origin. The wall has
 // N_w (r / R)^2 particles and the fluid lattice N_f (r / R)^3 points before the faces take theirs.
-// A shape whose faces leave no fluid gives a cell without fluid (the tissue names the case's keys).
+// A shape whose faces leave no fluid gives a cell without fluid (the tissue names the case's keys); so
+// does fluid.model = cavity, whose fluid is no particles (engine/cavity_fluid.hpp).
 Cell build_cell(const Params& p, const CellShape& shape = {});
 // The same with the case's fluid spacing given (a tissue's cells share it: fluid_spacing_m).
 Cell build_cell(const Params& p, const CellShape& shape, double fluid_spacing);

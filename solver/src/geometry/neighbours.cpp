@@ -243,26 +243,31 @@ void NeighbourLists::build(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3
   stale_ = false;
   moved_bound_ = 0;
 
-  Eigen::Vector3d lo = fluid_x.rowwise().minCoeff(), hi = fluid_x.rowwise().maxCoeff();
-  if (wall_x.cols()) {
-    lo = lo.cwiseMin(wall_x.rowwise().minCoeff());
-    hi = hi.cwiseMax(wall_x.rowwise().maxCoeff());
-  }
-  const double ff2 = list_fluid_cutoff_ * list_fluid_cutoff_, fw2 = list_wall_cutoff_ * list_wall_cutoff_;
-  const CellGrid fluid_grid(fluid_x, lo, hi, list_fluid_cutoff_);
-  const CellGrid wall_grid(wall_x, lo, hi, list_wall_cutoff_);
-
-  const int n = static_cast<int>(fluid_x.cols());
-  const CellOf cell_of = cell_of_fluid_.empty() ? CellOf{} : CellOf{cell_of_fluid_.data(), cell_of_wall_.data()};
-  const auto rows = [&](int first, int last, PairList& fluid_fluid, PairList& fluid_wall) {
-    list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, cell_of, first, last, fluid_fluid, fluid_wall);
-  };
+  // The box of every particle (a closed-cell fluid has none of its own: fluid_x is empty).
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = Eigen::Vector3d::Constant(-INFINITY);
+  for (const Eigen::Matrix3Xd* x : {&fluid_x, &wall_x})
+    if (x->cols()) {
+      lo = lo.cwiseMin(x->rowwise().minCoeff());
+      hi = hi.cwiseMax(x->rowwise().maxCoeff());
+    }
   static std::atomic<long> builds_in_process{0};
   fluid_fluid_.build = fluid_wall_.build = wall_wall_.build = ++builds_in_process;
   if (!cell_of_wall_.empty()) {
     const double ww = wall_wall_cutoff_ + skin_;
     list_wall_wall(wall_x, CellGrid(wall_x, lo, hi, ww, box), ww * ww, cell_of_wall_.data(), box, wall_wall_);
   }
+  const int n = static_cast<int>(fluid_x.cols());
+  if (n == 0) {  // no fluid particles: no fluid rows
+    for (PairList* list : {&fluid_fluid_, &fluid_wall_}) list->offset.assign(1, 0), list->index.clear(), list->pairs = 0;
+    return;
+  }
+  const double ff2 = list_fluid_cutoff_ * list_fluid_cutoff_, fw2 = list_wall_cutoff_ * list_wall_cutoff_;
+  const CellGrid fluid_grid(fluid_x, lo, hi, list_fluid_cutoff_);
+  const CellGrid wall_grid(wall_x, lo, hi, list_wall_cutoff_);
+  const CellOf cell_of = cell_of_fluid_.empty() ? CellOf{} : CellOf{cell_of_fluid_.data(), cell_of_wall_.data()};
+  const auto rows = [&](int first, int last, PairList& fluid_fluid, PairList& fluid_wall) {
+    list_rows(fluid_x, wall_x, fluid_grid, wall_grid, ff2, fw2, cell_of, first, last, fluid_fluid, fluid_wall);
+  };
   if (threads <= 1 || n < 2 * threads) {
     rows(0, n, fluid_fluid_, fluid_wall_);
     return;

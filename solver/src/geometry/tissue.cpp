@@ -283,7 +283,7 @@ Tissue build_tissue(const Params& p) {
       shape.holds_fluid = [&](const Eigen::Vector3d& x) { return inside_faces(x, faces, *p.fill_gap_m); };
     }
     Cell cell = build_cell(p, shape, t.fluid_spacing_m);
-    if (cell.fluid_x.cols() == 0) {  // the fill gap (or the faces pressed flat) left no lattice point inside
+    if (cell.fluid_x.cols() == 0 && p.fluid_model != kCavityFluid) {  // the fill gap (or the faces pressed flat) left no lattice point inside
       std::ostringstream msg;
       msg << "cell.fill_gap_um = " << *p.fill_gap_m * 1e6 << ": cell " << c << " (radius " << rc * 1e6
           << " um, its faces at tissue.centre_distance_over_diameter = " << p.centre_distance_over_diameter

@@ -273,6 +273,45 @@ void apply_override(json& doc, const std::string& assignment) {
   doc[section][key.substr(key.find('.') + 1)] = value;
 }
 
+namespace {
+
+// The keys only one fluid model reads (fluid.model): SPH's particles, smoothing, viscosity, coupling,
+// closures and CFL-bound settle (engine/sph_fluid.hpp); the quasi-static relaxation's (quasi_static.hpp).
+const std::vector<std::string> kSphOnlyKeys = {
+    "cell.n_fluid", "cell.fill_gap_um", "fluid.viscosity_Pa_s", "fluid.density_diffusion", "fluid.h0_um",
+    "fluid.h_over_dx", "heterogeneity.fluid_viscosity_cv", "coupling.model", "coupling.r0_um",
+    "coupling.repulsion_f0_N_m", "coupling.attraction_f0_N_m", "coupling.attraction_cutoff_over_h",
+    "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
+    "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"};
+const std::vector<std::string> kQuasiStaticOnlyKeys = {"time.relaxation_max_iterations"};
+const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance"};
+
+// Whether the case file gives `key` a value other than its default (a derived key: any value).
+bool given_away_from_default(const json& doc, const std::string& key) {
+  const std::size_t dot = key.find('.');
+  const std::string section = key.substr(0, dot), name = key.substr(dot + 1);
+  if (!doc.contains(section) || !doc[section].is_object() || !doc[section].contains(name)) return false;
+  const json& value = doc[section][name];
+  const ParamSpec& spec = *find_param(key);
+  if (is_choice(spec)) return value != json(spec.choices.front());
+  if (!spec.default_value) return !value.is_null();
+  return !value.is_number() || value.get<double>() != *spec.default_value;
+}
+
+}  // namespace
+
+std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p) {
+  std::vector<std::string> ignored;
+  const auto add = [&](const std::vector<std::string>& keys) {
+    for (const auto& key : keys)
+      if (given_away_from_default(doc, key)) ignored.push_back(key);
+  };
+  if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
+  if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);
+  if (p.time_scheme != kQuasiStatic) add(kQuasiStaticOnlyKeys);
+  return ignored;
+}
+
 Params validate_case(const json& doc) {
   if (!doc.is_object()) throw InputError("case must be a JSON object with sections " + show(json(sections())));
   Params p;
@@ -301,6 +340,9 @@ Params validate_case(const json& doc) {
       assign(*spec, value, p);
     }
   }
+  if (p.time_scheme == kQuasiStatic && p.fluid_model != kCavityFluid)
+    throw InputError("time.scheme = quasi_static needs fluid.model = cavity: an SPH fluid has no equilibrium of its "
+                     "own to relax to (its pressure is its particles' motion)");
   check_case_size(p);
   resolve_steady_state_defaults(p);
   resolve_density_update(p);

@@ -19,6 +19,10 @@ void apply_override(nlohmann::json& doc, const std::string& assignment);
 // the key path, the value and what is allowed.
 Params validate_case(const nlohmann::json& doc);
 
+// The keys `doc` gives away from their defaults that the case's models will not read (the SPH-only keys
+// of a closed-cell fluid, the relaxation's keys of a dynamic run), for a warning.
+std::vector<std::string> keys_the_case_ignores(const nlohmann::json& doc, const Params& p);
+
 // The case as JSON in the file's units, every key present (derived values filled in if known).
 nlohmann::json case_to_json(const Params& p);
 

@@ -71,6 +71,8 @@ void write_state(hid_t parent, const State& s) {
     h5::write(g.id(), "lamella_peak_opening", s.lamella_peak_opening_m, {s.lamella_peak_opening_m.size()});
   if (!s.plates.start_layer_height_m.empty())
     h5::write(g.id(), "start_layer_height", s.plates.start_layer_height_m, {s.plates.start_layer_height_m.size()});
+  if (!s.cavity_mass_kg.empty())  // a closed cell's fluid (fluid.model = cavity): one mass per cell
+    h5::write(g.id(), "cavity_mass", s.cavity_mass_kg, {s.cavity_mass_kg.size()});
   // the sliders: the plastic set a continued run carries
   h5::write(g.id(), "bond_plastic_elongation", s.bond_plastic_elongation_m, {s.bond_plastic_elongation_m.size()});
 }
@@ -120,6 +122,7 @@ SavedRun read_saved_run(const std::string& path) {
       s.plates.start_layer_height_m = h5::read_doubles(g.id(), "start_layer_height");
     if (h5::exists(g.id(), "bond_plastic_elongation"))
       s.bond_plastic_elongation_m = h5::read_doubles(g.id(), "bond_plastic_elongation");
+    if (h5::exists(g.id(), "cavity_mass")) s.cavity_mass_kg = h5::read_doubles(g.id(), "cavity_mass");
     s.wall.x = h5::read_points(g.id(), "wall_positions");
     s.wall.v = h5::read_points(g.id(), "wall_velocities");
     s.fluid.x = h5::read_points(g.id(), "fluid_positions");

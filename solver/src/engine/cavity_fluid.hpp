@@ -1,0 +1,65 @@
+#pragma once
+// The cell fluid as a closed cell of one uniform pressure (fluid.model = cavity; model.md §9): per cell a
+// mass M_f (State::cavity_mass_kg, Eq 11 through the cell's wall area), filling the volume the wall
+// encloses at density M_f / V, its pressure Eq 7's, pushing on the wall as P dV/dx_k
+// (physics/cavity_pressure.hpp). No particles: no viscosity, no coupling layer, no closures (its
+// volume is the enclosed volume and its pressure the wall's by construction). The reference for
+// quasi-static answers (quasi_static.hpp), for K up to water's and beyond, and for wall meshes SPH
+// cannot afford.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/fluid_model.hpp"
+
+namespace cellsim {
+
+class CavityFluid final : public FluidModel {
+ public:
+  explicit CavityFluid(const Params& p);
+
+  void fill(State& s, const Tissue& tissue, const WallSurface& surface) const override;
+  double mass_kg(const State& s) const override;
+  FluidReadings readings(const State& s, const CellRanges& cells, const WallSurface& surface,
+                         const EquationOfState& eos) const override;
+  double follow_smoothing_length(double) override { return 0; }  // no wall-fluid pairs
+  bool density_in_drift() const override { return false; }
+  void advance_density(State&, const FluidContext&, double, const EnergyValues&) override {}
+  void compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) override;
+  void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) override;
+  void couple_to_wall(State& s, const FluidContext& c, bool weights_fresh, Eigen::Matrix3Xd& on_wall,
+                      Eigen::Matrix3Xd& backstop_on_wall, EnergyValues& power_W) override;
+  void kick(State& s, double half_dt, int threads) override;
+  double drift(State&, double, int) override { return 0; }
+  void apply_drying_closure(State&, const FluidContext&, const std::vector<double>&) override {}
+  void start_compression(State&, const FluidContext&) override {}
+  void apply_compression_closure(State&, const FluidContext&) override {}
+  std::string time_step_violation(const State& s, const FluidContext& c) const override;
+  void stored_energy(const State& s, const FluidContext& c, EnergyValues& e) const override;
+  double stored_energy_per_turgor_m3(const State& s, const EquationOfState& eos) const override;
+  std::vector<double> cell_mean_pressure_Pa(const CellRanges&) const override { return pressure_Pa_; }
+  const Eigen::Matrix3Xd& particle_force() const override { return no_particles_; }
+
+  // Eq 11 over one increment of dt_s (quasi_static.hpp), backward Euler: until end_increment, each cell's
+  // density is the one at which its mass now plus dt dM/dt fills the volume its wall encloses
+  // (physics/cavity_pressure.hpp; the wall's area and L_p as now). dt_s = infinity: drained, P = P_T.
+  void begin_increment(const State& s, const FluidContext& c, double dt_s);
+  // Into the state, the masses the increment ends with; returns the energy Eq 11's water brought over it
+  // (the change of M e(M/V) plus the work of the pressure along the volume's path, which the wall took).
+  double end_increment(State& s, const FluidContext& c);
+
+ private:
+  double density_in_increment(int cell, double volume_m3, const EquationOfState& eos) const;
+
+  double rho0_kg_m3_, dt_s_;
+  // At the last force evaluation, per cell: volume, density, pressure, Eq 11's rate, and the time-step
+  // limits (Eq 11's relaxation, the volume spring's period).
+  std::vector<double> volume_m3_, rho_, pressure_Pa_, dm_dt_;
+  double mass_transfer_limit_s_ = INFINITY, volume_mode_limit_s_ = INFINITY;
+  // An increment's start (begin_increment): each cell's mass and volume, and dt A L_p (m^3/Pa).
+  bool in_increment_ = false;
+  std::vector<double> increment_mass_kg_, increment_volume_m3_, increment_a_m3_Pa_;
+  Eigen::Matrix3Xd no_particles_;
+};
+
+}  // namespace cellsim

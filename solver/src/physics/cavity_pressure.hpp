@@ -1,0 +1,51 @@
+#pragma once
+// A closed cell of one uniform pressure (model.md §9, fluid.model = cavity): its fluid of mass M fills
+// the volume V its wall encloses, at density M / V and Eq 7's pressure. The pressure pushes on wall
+// particle k with P dV/dx_k, the exact gradient of the fluid's stored energy M e(M/V) at fixed M
+// (de = P / rho^2 drho: d(M e)/dV = -P), so the energy account closes.
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Core>
+
+#include "physics/eos.hpp"
+
+namespace cellsim {
+
+// dV/dx_k of the signed-tetrahedra volume: a sixth of the sum of the area normals (v - u) x (w - u) of
+// the triangles at k, which is WallSurface::vertex_normal / 6 (exact for a closed surface).
+inline Eigen::Vector3d volume_gradient(const Eigen::Vector3d& vertex_normal) { return vertex_normal / 6.0; }
+
+// Eq 11 over an increment dt, backward Euler, for one closed cell (the cell as one particle, n_f = 1):
+// the density rho at which M_n + dt dM/dt(rho) fills V, with dM/dt = -A L_p rho (P(rho) - P_T), i.e.
+//   rho V = M_n - a rho (P(rho) - P_T),  a = dt A L_p.
+// a = 0: the mass is kept (rho = M_n / V); a = infinity: drained, P = P_T (rho = rho0). The left side
+// minus the right grows with rho wherever it is positive, so the root is unique: safeguarded Newton
+// from M_n / V within [0, max(M_n / V, rho0)], where the sign changes.
+inline double implicit_cavity_density(double mass_kg, double volume_m3, double a_m3_Pa, const EquationOfState& eos) {
+  if (a_m3_Pa == 0) return mass_kg / volume_m3;
+  if (std::isinf(a_m3_Pa)) return eos.rho0_kg_m3;
+  double lo = 0, hi = std::max(mass_kg / volume_m3, eos.rho0_kg_m3);
+  double rho = mass_kg / volume_m3;
+  const double K = eos.bulk_modulus_Pa, gamma = eos.exponent;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double excess = eos.pressure(rho) - eos.turgor_Pa;
+    const double g = rho * volume_m3 - mass_kg + a_m3_Pa * rho * excess;
+    if (g == 0) return rho;
+    (g < 0 ? lo : hi) = rho;
+    const double slope = volume_m3 + a_m3_Pa * (excess + gamma * K * std::pow(rho / eos.rho0_kg_m3, gamma));
+    double next = rho - g / slope;
+    if (!(slope > 0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket
+    if (std::abs(next - rho) <= 1e-15 * rho) return next;
+    rho = next;
+  }
+  return rho;
+}
+
+// The cell's fluid as a spring of the enclosed volume: d P / d V at fixed M is -rho P'(rho) / V, with
+// P'(rho) = gamma K rho^(gamma-1) / rho0^gamma (Eq 7).
+inline double cavity_volume_stiffness_Pa_m3(double rho, double volume_m3, const EquationOfState& eos) {
+  return eos.exponent * eos.bulk_modulus_Pa * std::pow(rho / eos.rho0_kg_m3, eos.exponent) / volume_m3;
+}
+
+}  // namespace cellsim

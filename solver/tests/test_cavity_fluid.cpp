@@ -1,0 +1,233 @@
+// The closed-cell fluid (engine/cavity_fluid.hpp, physics/cavity_pressure.hpp) and the quasi-static
+// scheme (engine/quasi_static.hpp): Eq 11 over an increment, the pressure as the exact gradient of the
+// stored energy, Young-Laplace at rest, the energy account dynamic and quasi-static, and the errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "cli_helpers.hpp"
+#include "engine/quasi_static.hpp"
+#include "engine/settle.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/tissue.hpp"
+#include "physics/cavity_pressure.hpp"
+#include "small_cell.hpp"
+
+using namespace cellsim;
+using cellsim::testing::small_cell_case;
+
+namespace {
+
+const nlohmann::json kCavity = {{"fluid", {{"model", "cavity"}}}};
+
+nlohmann::json cavity_case(nlohmann::json extra = nlohmann::json::object()) {
+  nlohmann::json doc = kCavity;
+  doc.merge_patch(extra);
+  return doc;
+}
+
+struct Built {
+  explicit Built(const nlohmann::json& extra = kCavity) : p(small_cell_case(extra)), tissue(build_tissue(p)), sim(p, tissue) {}
+  Params p;
+  Tissue tissue;
+  Simulation sim;
+};
+
+const EquationOfState kEos{200e3, 20e6, 1000, 7};
+
+}  // namespace
+
+// rho V = M_n - a rho (P(rho) - P_T) to round-off; a = 0 keeps the mass, a = infinity holds P = P_T.
+TEST(CavityPressure, TheIncrementsDensityMeetsEq11BackwardEuler) {
+  const double V = 1.7e-12;
+  for (double mass_over_rho0V : {0.97, 1.0, 1.01, 1.3})
+    for (double a : {0.0, 1e-26, 1e-19, 1e-17, 1e-14}) {
+      const double M = mass_over_rho0V * 1000 * V;
+      const double rho = implicit_cavity_density(M, V, a, kEos);
+      const double excess = kEos.pressure(rho) - kEos.turgor_Pa;
+      const double g = rho * V - M + a * rho * excess;
+      const double scale = rho * V + a * rho * (std::abs(excess) + 7 * kEos.bulk_modulus_Pa);  // rho dg/drho
+      EXPECT_NEAR(g, 0.0, 1e-13 * scale) << "M/(rho0 V) " << mass_over_rho0V << ", a " << a;
+      if (a == 0) EXPECT_DOUBLE_EQ(rho, M / V);
+    }
+  EXPECT_EQ(implicit_cavity_density(1e-9, 1.7e-12, INFINITY, kEos), 1000.0);
+  // A large a drains the cell toward P_T: the density lies between M/V and rho0.
+  const double rho = implicit_cavity_density(1.02 * 1000 * 1.7e-12, 1.7e-12, 1e-14, kEos);
+  EXPECT_GT(rho, 1000.0);
+  EXPECT_LT(rho, 1020.0);
+}
+
+// dV/dx_k = vertex_normal / 6 is the derivative of the signed-tetrahedra volume (central differences on
+// a cell with its particles moved off the sphere).
+TEST(CavityPressure, TheVolumeGradientIsTheDerivativeOfTheEnclosedVolume) {
+  Built b;
+  Eigen::Matrix3Xd x = b.tissue.wall_x;
+  for (Eigen::Index k = 0; k < x.cols(); ++k) x.col(k) *= 1.0 + 0.05 * std::sin(3.0 * k);
+  const WallSurface at = wall_surface(x, b.tissue.mesh);
+  const double h = 1e-9;
+  for (Eigen::Index k : {0, 17, 80, 161})
+    for (int d = 0; d < 3; ++d) {
+      Eigen::Matrix3Xd plus = x, minus = x;
+      plus(d, k) += h;
+      minus(d, k) -= h;
+      const double fd = (wall_surface(plus, b.tissue.mesh).volume_m3 - wall_surface(minus, b.tissue.mesh).volume_m3) / (2 * h);
+      EXPECT_NEAR(volume_gradient(at.vertex_normal.col(k))[d], fd, 1e-7 * at.vertex_normal.col(k).norm())
+          << "particle " << k << ", axis " << d;
+    }
+}
+
+// No particles are built; each cell holds rho0 times its volume, at P = P_T0.
+TEST(CavityFluid, BuildsNoParticlesAndFillsEachCellAtRho0) {
+  Built b(cavity_case({{"tissue", {{"cells_x", 2}}}}));
+  const State& s = b.sim.state();
+  EXPECT_EQ(s.fluid.size(), 0);
+  ASSERT_EQ(s.cavity_mass_kg.size(), 2u);
+  for (int c = 0; c < 2; ++c) {
+    EXPECT_NEAR(s.cavity_mass_kg[c], 1000 * b.sim.surface().cell_volume_m3[c], 1e-12 * s.cavity_mass_kg[c]);
+    EXPECT_NEAR(b.sim.cell_mean_fluid_pressure_Pa()[c], b.p.turgor_Pa, 1e-6 * b.p.turgor_Pa);
+  }
+  const Record r = b.sim.record();
+  EXPECT_DOUBLE_EQ(r.fluid_mass_ratio, 1.0);
+  EXPECT_NEAR(r.fluid_volume_ratio, 1.0, 1e-14);
+  EXPECT_EQ(r.kinetic_energy_fluid_J, 0.0);
+}
+
+// F_k = P dV/dx_k is minus the derivative of the fluid's stored energy M e(M/V) at fixed M.
+TEST(CavityFluid, PushesOnTheWallAsMinusTheGradientOfItsStoredEnergy) {
+  Built b;
+  State& s = b.sim.mutable_state();
+  s.cavity_mass_kg[0] *= 1.004;  // a pressure above the turgor: the wall is pushed out
+  for (Eigen::Index k = 0; k < s.wall.size(); ++k) s.wall.x.col(k) *= 1.0 + 0.02 * std::cos(5.0 * k);
+  b.sim.refresh_rates();
+  CavityFluid cavity(b.p);
+  const auto context = [&](const WallSurface& surface) {
+    return FluidContext{surface, b.sim.neighbours(), b.sim.cells(), b.sim.eos(), 0.0, 1};
+  };
+  const auto internal_J = [&](const Eigen::Matrix3Xd& x) {
+    const WallSurface surface = wall_surface(x, b.tissue.mesh);
+    EnergyValues e{};
+    cavity.stored_energy(s, context(surface), e);
+    return e[kInternal];
+  };
+  EnergyValues power{};
+  Eigen::Matrix3Xd on_wall, backstop;
+  cavity.compute_forces(s, context(b.sim.surface()), power);
+  cavity.couple_to_wall(s, context(b.sim.surface()), false, on_wall, backstop, power);
+  EXPECT_GT(cavity.cell_mean_pressure_Pa(b.sim.cells())[0], b.p.turgor_Pa);
+  EXPECT_EQ(backstop.norm(), 0.0);
+  const double h = 1e-10;
+  for (Eigen::Index k : {3, 60, 120})
+    for (int d = 0; d < 3; ++d) {
+      Eigen::Matrix3Xd plus = s.wall.x, minus = s.wall.x;
+      plus(d, k) += h;
+      minus(d, k) -= h;
+      const double force = -(internal_J(plus) - internal_J(minus)) / (2 * h);
+      EXPECT_NEAR(on_wall(d, k), force, 1e-5 * on_wall.col(k).norm()) << "particle " << k << ", axis " << d;
+    }
+}
+
+// At rest after the settle, the wall carries the pressure: the virial of a closed network in equilibrium,
+// sum of tension x length = 3 P V (bending's share aside), so the wall tension sum / (2 A) is P R / 2 for
+// a sphere (Young-Laplace); and the cell sits at P_T0 with mass rho0 V.
+TEST(CavityFluid, AtRestTheWallCarriesThePressureByYoungLaplace) {
+  Built b(cavity_case({{"time", {{"equilibrium_tolerance", 1e-6}}}}));
+  const SettleReport settled = settle(b.sim, 200000, 0);
+  ASSERT_TRUE(settled.converged) << settled.residual;
+  const Record r = b.sim.record();
+  const double P = r.mean_pressure_Pa, V = r.volume_m3, A = r.area_m2;
+  EXPECT_NEAR(P, b.p.turgor_Pa, 1e-9 * b.p.turgor_Pa);
+  EXPECT_NEAR(r.wall_tension_N_m, 3 * P * V / (2 * A), 2e-3 * r.wall_tension_N_m);
+  const double R = 0.5 * r.equivalent_diameter_m;
+  EXPECT_NEAR(P, 2 * r.wall_tension_N_m / R, 1e-2 * P);
+  // The outward push along the unit vertex normals / area: |sum of a vertex's triangle normals| / 6 falls
+  // short of a third of their areas where the mesh is curved (1.6 % at 162 particles).
+  EXPECT_NEAR(r.wall_pressure_Pa, P, 3e-2 * P);
+  EXPECT_GT(settled.volume_ratio, 1.0);           // the turgor inflated it
+}
+
+// Dynamic (the wall's masses, the plate at its speed): the plate's work is the stored energy's change
+// and the losses, to 1e-4 of it.
+TEST(CavityFluid, ADynamicCompressionClosesTheEnergyAccount) {
+  Built b;
+  settle(b.sim, 100000, 0);
+  for (int n = 0; n < 2000; ++n) b.sim.step();
+  b.sim.start_compression();
+  while (b.sim.nominal_strain() < 0.1) b.sim.step();
+  const Record r = b.sim.record();
+  ASSERT_GT(r.energy[kPlateWork], 0.0);
+  EXPECT_LT(std::abs(r.energy_residual_J), 1e-4 * r.energy[kPlateWork]) << r.energy_residual_J;
+  EXPECT_GT(r.mean_pressure_Pa, b.p.turgor_Pa);  // sealed (L_p 1e-12): squeezed, it pressurises
+  EXPECT_NEAR(r.load_fluid_N, r.mean_pressure_Pa * r.contact_area_top_m2, 0.2 * r.load_fluid_N);
+}
+
+// Quasi-static drying (a sequence of equilibria while the ramp moves P_T and L_ref, Eq 11 integrated over
+// each step): every step ends at rest; the dried cell is drained to P_T(X) at rho0, so M/M0 = V/V0; and the
+// account's residual is a small part of the energy the drive put in.
+TEST(QuasiStatic, ADryingIsASequenceOfEquilibriaThatEndsDrainedAtTheTurgorOfItsDryness) {
+  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 500}}}, {"drying", {{"dryness", 0.5}}}}));
+  settle(b.sim, 100000, 0);
+  const double V0 = b.sim.surface().volume_m3;
+  for (int n = 0; n < 60; ++n) {  // the 20 us ramp and 10 us beyond
+    quasi_static_step(b.sim);
+    ASSERT_EQ(b.sim.state().wall.v.norm(), 0.0);
+  }
+  const Record r = b.sim.record();
+  EXPECT_NEAR(r.mean_pressure_Pa, 0.5 * b.p.turgor_Pa, 1e-3 * b.p.turgor_Pa);
+  EXPECT_NEAR(r.fluid_mass_ratio, r.volume_m3 / V0, 1e-3);
+  EXPECT_LT(r.volume_m3 / V0, 0.8);  // the contraction springs shrank it
+  const double drive_J = std::abs(r.energy[kDrive]);
+  ASSERT_GT(drive_J, 0.0);
+  EXPECT_LT(std::abs(r.energy_residual_J), 1e-3 * drive_J) << r.energy_residual_J << " of " << drive_J;
+}
+
+// The contracts of test_fluid_model.cpp, for the closed cell: it writes only its own terms of the stored
+// energy (no particles: no kinetic share, no coupling potential), its turgor derivative matches a
+// difference, and it names the limit a time step exceeds.
+TEST(CavityFluid, MeetsTheFluidModelsContracts) {
+  Built b;
+  for (int n = 0; n < 50; ++n) b.sim.step();  // Eq 11 moves the mass: the density leaves rho0
+  const FluidContext context = b.sim.fluid_context();
+  constexpr double kUntouched = -12345.0;
+  EnergyValues e;
+  e.fill(kUntouched);
+  b.sim.fluid().stored_energy(b.sim.state(), context, e);
+  for (const EnergyTerm& term : kEnergyTerms) {
+    const bool its_own = term.id == kKinetic || term.id == kInternal || term.id == kCouplingPotential;
+    EXPECT_EQ(e[term.id] == kUntouched, !its_own) << term.label;
+  }
+  EXPECT_EQ(e[kKinetic], 0.0);
+  EXPECT_EQ(e[kCouplingPotential], 0.0);
+  const auto internal_at = [&](double turgor_Pa) {
+    FluidContext at = context;
+    at.eos.turgor_Pa = turgor_Pa;
+    EnergyValues values{};
+    b.sim.fluid().stored_energy(b.sim.state(), at, values);
+    return values[kInternal];
+  };
+  const double dP = 1e3, P_T = context.eos.turgor_Pa;
+  const double derivative = b.sim.fluid().stored_energy_per_turgor_m3(b.sim.state(), context.eos);
+  ASSERT_NE(derivative, 0.0);
+  EXPECT_NEAR((internal_at(P_T + dP) - internal_at(P_T - dP)) / (2 * dP) / derivative, 1.0, 1e-6);
+  EXPECT_EQ(b.sim.fluid().time_step_violation(b.sim.state(), context), "");
+
+  Built stiff(cavity_case({{"fluid", {{"bulk_modulus_MPa", 1e5}}}, {"drying", {{"Lp_m_per_s_Pa", 1e-3}}}}));
+  const std::string violation = stiff.sim.fluid().time_step_violation(stiff.sim.state(), stiff.sim.fluid_context());
+  EXPECT_NE(violation.find("time.dt_ns"), std::string::npos) << violation;
+  EXPECT_NE(violation.find("closed cell"), std::string::npos) << violation;
+}
+
+// A saved closed cell continues: its masses are in the state; one of the wrong length is refused.
+TEST(CavityFluid, ItsMassesAreStateThatARestoreChecks) {
+  Built b;
+  for (int n = 0; n < 20; ++n) b.sim.step();
+  State saved = b.sim.state();
+  Built again;
+  again.sim.restore(saved);
+  EXPECT_EQ(again.sim.state().cavity_mass_kg, saved.cavity_mass_kg);
+  saved.cavity_mass_kg.push_back(1e-12);
+  EXPECT_THROW(again.sim.check_restorable(saved), InputError);
+  saved.cavity_mass_kg.pop_back();
+  saved.cavity_mass_kg[0] = -1;
+  EXPECT_THROW(again.sim.check_restorable(saved), InputError);
+}
