@@ -144,6 +144,11 @@ SavedRun read_saved_run(const std::string& path) {
       if (column.size() != run.records.size()) throw std::runtime_error("time series of unequal length");
       for (std::size_t r = 0; r < column.size(); ++r) q.value(run.records[r]) = column[r];
     }
+    // The last record is taken at the state's step (run.cpp): a series that ends elsewhere was changed on
+    // disk (a zeroed chunk with its checksum passes Fletcher-32; found by the fuzz corpus).
+    if (!run.records.empty() && (run.records.back().time_s != s.time_s ||
+                                 run.records.back().step != static_cast<double>(s.step)))
+      throw std::runtime_error("its time series does not end at its state's time and step (damaged)");
     for (const auto& [group_name, list] : {std::pair{"cells", &cell_quantities()}, std::pair{"layers", &layer_quantities()}}) {
       if (!h5::exists(file.id(), group_name)) continue;  // written before the layers were
       h5::Handle group = h5::open_group(file.id(), group_name);
