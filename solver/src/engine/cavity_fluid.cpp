@@ -44,7 +44,7 @@ double CavityFluid::mass_kg(const State& s) const {
 FluidReadings CavityFluid::readings(const State& s, const CellRanges& cells, const WallSurface& surface,
                                     const EquationOfState& eos) const {
   FluidReadings r;
-  double pressure_volume = 0, fluid_volume = 0;
+  double pressure_volume = 0;
   for (int c = 0; c < cells.count(); ++c) {
     const double M = s.cavity_mass_kg[c], V = surface.cell_volume_m3[c];
     const double P = eos.pressure(M / V);
@@ -52,10 +52,9 @@ FluidReadings CavityFluid::readings(const State& s, const CellRanges& cells, con
     r.cell_mean_pressure_Pa.push_back(P);
     r.mass_kg += M;
     pressure_volume += P * V;
-    fluid_volume += M / (M / V);
   }
   r.mean_pressure_Pa = pressure_volume / surface.volume_m3;
-  r.volume_ratio = fluid_volume / surface.volume_m3;
+  r.volume_ratio = 1.0;  // the fluid fills the enclosed volume by construction
   return r;
 }
 
