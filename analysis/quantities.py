@@ -70,6 +70,8 @@ QUANTITIES = {
     "wall_plastic_strain_mean": ("mean plastic strain of the wall's bonds", 1.0),
     "wall_plastic_strain_max": ("largest plastic strain of a wall bond", 1.0),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
+    "relaxation_residual": ("largest force left by the relaxation / pressure load", 1.0),
+    "relaxation_evaluations": ("force evaluations of the relaxation", 1.0),
 }
 
 # Derived by analysis/aggregate.py from the solver's series, for every run alike.

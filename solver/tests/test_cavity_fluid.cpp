@@ -3,7 +3,9 @@
 // stored energy, Young-Laplace at rest, the energy account dynamic and quasi-static, and the errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <filesystem>
 
 #include "cli_helpers.hpp"
@@ -179,6 +181,61 @@ TEST(QuasiStatic, ADryingIsASequenceOfEquilibriaThatEndsDrainedAtTheTurgorOfItsD
   const double drive_J = std::abs(r.energy[kDrive]);
   ASSERT_GT(drive_J, 0.0);
   EXPECT_LT(std::abs(r.energy_residual_J), 1e-3 * drive_J) << r.energy_residual_J << " of " << drive_J;
+}
+
+// Quasi-static compression (a sequence of equilibria while the plate moves): every step ends at rest
+// within its test, the plates hold the cell with equal and opposite forces, the plate's work is the
+// trapezoid of its force over its travel, and that work is the stored energy's change plus what the
+// relaxations released (a non-negative share: a wall that folds gives energy back in snaps).
+TEST(QuasiStatic, ACompressionIsASequenceOfEquilibriaThatThePlatesHoldAlike) {
+  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 200}}}}));
+  settle(b.sim, 100000, 0);
+  quasi_static_step(b.sim);
+  b.sim.start_compression();
+  Record last = b.sim.record();
+  const Record start = last;
+  double curve_work_J = 0;
+  while (last.nominal_strain < 0.1) {
+    quasi_static_step(b.sim);
+    const Record r = b.sim.record();
+    ASSERT_LE(r.relaxation_residual, b.p.equilibrium_tolerance);
+    ASSERT_GE(r.relaxation_evaluations, 1.0);
+    ASSERT_EQ(b.sim.state().wall.v.norm(), 0.0);
+    curve_work_J += 0.5 * (last.plate_force_top_N + r.plate_force_top_N) * (last.plate_top_z_m - r.plate_top_z_m);
+    last = r;
+  }
+  ASSERT_GT(last.plate_force_top_N, 0.0);
+  // Equilibrium: the forces left on the particles sum to at most tolerance x P x the wall's area.
+  const double imbalance_bound_N = b.p.equilibrium_tolerance * last.mean_pressure_Pa * last.area_m2;
+  EXPECT_NEAR(last.plate_force_top_N, last.plate_force_bottom_N, imbalance_bound_N);
+  const auto change = [&](EnergyTermId term) { return last.energy[term] - start.energy[term]; };
+  const double work_J = change(kPlateWork);
+  EXPECT_NEAR(work_J, curve_work_J, 1e-9 * curve_work_J);
+  const double released_J = change(kRelaxationLoss);
+  EXPECT_GE(released_J, -1e-6 * work_J);
+  EXPECT_LT(released_J, 0.5 * work_J);
+  EXPECT_NEAR(last.stored_energy_J - start.stored_energy_J, work_J - released_J + change(kMassTransfer), 1e-9 * work_J);
+  EXPECT_LT(std::abs(last.energy_residual_J), 1e-9 * work_J);
+}
+
+// A wall that yields, compressed quasi-statically: the history kept is that of the accepted points (the
+// probes and rejected trials put theirs back), so one more evaluation at the equilibrium moves no plastic
+// slider; the flow dissipated, and the account closes.
+TEST(QuasiStatic, AYieldingWallKeepsOnlyTheHistoryOfItsAcceptedPoints) {
+  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 200}}}, {"wall", {{"yield_stress_MPa", 1.5}}}}));
+  settle(b.sim, 100000, 0);
+  quasi_static_step(b.sim);
+  b.sim.start_compression();
+  while (b.sim.nominal_strain() < 0.08) quasi_static_step(b.sim);
+  const std::vector<double> plastic = b.sim.state().bond_plastic_elongation_m;
+  const double plastic_loss_J = b.sim.state().energy.integral[kPlasticLoss];
+  ASSERT_GT(*std::max_element(plastic.begin(), plastic.end()), 0.0) << "the wall did not yield: no test";
+  EXPECT_GT(plastic_loss_J, 0.0);
+  b.sim.refresh_rates();
+  EXPECT_EQ(b.sim.state().bond_plastic_elongation_m, plastic);
+  EXPECT_EQ(b.sim.state().energy.integral[kPlasticLoss], plastic_loss_J);
+  const Record r = b.sim.record();
+  EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]);
 }
 
 // The contracts of test_fluid_model.cpp, for the closed cell: it writes only its own terms of the stored

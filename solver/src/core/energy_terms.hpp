@@ -84,8 +84,9 @@ inline constexpr std::array<EnergyTerm, kEnergyTermCount> kEnergyTerms{{
      "for each bond separated)"},
     {kRelaxationLoss, "relaxation_loss_J", "energy_relaxation_loss_J", EnergyRole::Loss, EnergySource::Jump,
      "relaxation loss",
-     "energy the quasi-static relaxations took out since t = 0 (time.scheme = quasi_static: FIRE's steering and "
-     "stops, the wall damping at pseudo-velocities; 0 for a dynamic run)"},
+     "energy the quasi-static relaxations released since t = 0 beyond the loads' work (time.scheme = quasi_static: "
+     "the trapezoid of the plate's force over its travel and of the drying ramp's power): the snaps of a wall that "
+     "folds, and the trapezoid's error, which shrinks as dt^2; 0 for a dynamic run"},
 }};
 
 // One value per term, indexed by EnergyTermId.

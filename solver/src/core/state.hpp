@@ -2,6 +2,7 @@
 // The evolving state of one run: particles as structure-of-arrays, indices stable for the whole run
 // (a tissue's cells one after another: tissue.hpp).
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -81,6 +82,10 @@ struct State {
   double wall_tension_N_m = 0;    // mean membrane tension: sum(tension x length) / (2 area)
   double wall_pressure_Pa = 0;    // outward LJ push on the wall along its normals / area
   double lateral_stress_x_Pa = 0, lateral_stress_y_Pa = 0;  // a periodic slab's, tension positive (model.md §10b)
+  // The last quasi-static relaxation's (engine/quasi_static.hpp): its largest force on a wall particle over
+  // the pressure load, and its force evaluations; NaN in a dynamic run.
+  double relaxation_residual = std::numeric_limits<double>::quiet_NaN();
+  double relaxation_evaluations = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace cellsim

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "physics/cavity_pressure.hpp"
 #include "physics/mass_transfer.hpp"
@@ -165,6 +166,24 @@ void CavityFluid::begin_increment(const State& s, const FluidContext& c, double 
   in_increment_ = true;
 }
 
+// Five-point Gauss-Legendre along the volume's path from the increment's start to volume_m3.
+double CavityFluid::pressure_work_J(int cell, double volume_m3, const EquationOfState& eos) const {
+  const double V0 = increment_volume_m3_[cell];
+  double work = 0;
+  for (std::size_t q = 0; q < kGaussNode.size(); ++q) {
+    const double V = 0.5 * (V0 + volume_m3) + 0.5 * (volume_m3 - V0) * kGaussNode[q];
+    work += kGaussWeight[q] * eos.pressure(density_in_increment(cell, V, eos));
+  }
+  return 0.5 * (volume_m3 - V0) * work;
+}
+
+double CavityFluid::increment_work_J(const FluidContext& c) const {
+  if (!in_increment_) throw std::logic_error("increment_work_J outside an increment (cavity_fluid.hpp)");
+  double work = 0;
+  for (int cell = 0; cell < c.cells.count(); ++cell) work += pressure_work_J(cell, c.surface.cell_volume_m3[cell], c.eos);
+  return work;
+}
+
 double CavityFluid::end_increment(State& s, const FluidContext& c) {
   double water_J = 0;
   for (int cell = 0; cell < c.cells.count(); ++cell) {
@@ -172,13 +191,8 @@ double CavityFluid::end_increment(State& s, const FluidContext& c) {
     const double V1 = c.surface.cell_volume_m3[cell];
     const double M1 = density_in_increment(cell, V1, c.eos) * V1;
     // The pressure's work along the volume's path: in the increment P is a function of V alone.
-    double work = 0;
-    for (std::size_t q = 0; q < kGaussNode.size(); ++q) {
-      const double V = 0.5 * (V0 + V1) + 0.5 * (V1 - V0) * kGaussNode[q];
-      work += kGaussWeight[q] * c.eos.pressure(density_in_increment(cell, V, c.eos));
-    }
-    work *= 0.5 * (V1 - V0);
-    water_J += M1 * c.eos.internal_energy_J_kg(M1 / V1) - M0 * c.eos.internal_energy_J_kg(M0 / V0) + work;
+    water_J += M1 * c.eos.internal_energy_J_kg(M1 / V1) - M0 * c.eos.internal_energy_J_kg(M0 / V0) +
+               pressure_work_J(cell, V1, c.eos);
     s.cavity_mass_kg[cell] = M1;
   }
   in_increment_ = false;

@@ -47,9 +47,13 @@ class CavityFluid final : public FluidModel {
   // Into the state, the masses the increment ends with; returns the energy Eq 11's water brought over it
   // (the change of M e(M/V) plus the work of the pressure along the volume's path, which the wall took).
   double end_increment(State& s, const FluidContext& c);
+  // In an increment: the work the cells' pressures did on their walls since it began, sum of the
+  // integral of P dV from each cell's volume then to its volume now (P a function of V alone there).
+  double increment_work_J(const FluidContext& c) const;
 
  private:
   double density_in_increment(int cell, double volume_m3, const EquationOfState& eos) const;
+  double pressure_work_J(int cell, double volume_m3, const EquationOfState& eos) const;
 
   double rho0_kg_m3_, dt_s_;
   // At the last force evaluation, per cell: volume, density, pressure, Eq 11's rate, and the time-step

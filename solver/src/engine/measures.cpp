@@ -26,6 +26,8 @@ void measure_cells(const State& s, const CellRanges& cells, const WallSurface& s
   r.layer_centroid_z_m = heights.layer_centroid_z_m;
   r.layer_height_strain.assign(heights.layer_height_m.size(), kNaN);
   r.gauge_strain = kNaN;
+  r.relaxation_residual = s.relaxation_residual;
+  r.relaxation_evaluations = s.relaxation_evaluations;
   r.period_x_m = r.period_y_m = r.lateral_stress_Pa = kNaN;
   if (s.box.periodic()) {
     r.period_x_m = s.box.length_x_m;
@@ -157,6 +159,14 @@ const std::vector<Quantity>& quantities() {
        &Record::lateral_stress_Pa},
       {"porosity", "1", "1 - (sum of the cells' enclosed volumes) / tissue_volume_m3 (NaN for one cell)",
        &Record::porosity},
+      {"relaxation_residual", "1",
+       "time.scheme = quasi_static: the equilibrium test of the step's relaxation, the largest force on a wall "
+       "particle / (max(P_T0, |P|) x the mean area a wall particle owns); at most time.equilibrium_tolerance "
+       "(NaN for a dynamic run)",
+       &Record::relaxation_residual},
+      {"relaxation_evaluations", "1",
+       "time.scheme = quasi_static: force evaluations the step's relaxation took (NaN for a dynamic run)",
+       &Record::relaxation_evaluations},
     };
     add_energy_quantities(q);
     return q;

@@ -30,6 +30,7 @@ struct Record {
   double lamella_intact, tissue_volume_m3, porosity;  // a tissue's (model.md §10)
   double gauge_strain;  // the interior layers' strain (strain_gauge.hpp)
   double period_x_m, period_y_m, lateral_stress_Pa;  // a periodic slab's (model.md §10b)
+  double relaxation_residual, relaxation_evaluations;  // time.scheme = quasi_static's (quasi_static.hpp)
   // The energy account (energy_account.hpp): each term of core/energy_terms.hpp, their stored sum, the residual.
   EnergyValues energy;
   double stored_energy_J, energy_residual_J;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "engine/simulation.hpp"
@@ -14,18 +16,18 @@
 namespace cellsim {
 namespace {
 
-// FIRE's constants (Bitzek et al. 2006); its pseudo-step starts at half the wall springs' limit and grows
-// up to it (the limit is a bound on the stiffest mode: step_checks.hpp).
-constexpr double kAlphaStart = 0.1, kAlphaShrink = 0.99, kStepGrow = 1.1, kStepShrink = 0.5;
-constexpr int kStepsBeforeGrowing = 5;
-constexpr double kFirstStepOverLimit = 0.5;
-constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
 // Newton's: the inner solve stops at |r| <= this x |F|, or after so many products; a product's probe
-// moves no particle farther than kProbe_m; the step is halved at most kMaxHalvings times; where Newton
-// stalls FIRE runs kFireIterations. The springs' stiffness gets kStiffnessShift_N_m on its diagonal.
+// moves no particle farther than kProbe_m. The springs' stiffness gets kStiffnessShift_N_m on its
+// diagonal (the free motions between frictionless plates). The shift starts at kLeastShift_N_m where
+// it must and grows or shrinks by kShiftGrowth; a step is accepted where the potential falls by
+// kAcceptRatio of the model's promise (kGoodRatio: the shift shrinks), or, within round-off of the
+// potential, where the largest force falls.
 constexpr double kForcingTerm = 0.1, kProbe_m = 1e-11, kStiffnessShift_N_m = 1e-2;
-constexpr int kMaxConjugateGradients = 200, kMaxHalvings = 8;
-constexpr std::int64_t kFireIterations = 2000;
+constexpr double kLeastShift_N_m = 1e-2, kShiftGrowth = 4, kArmijo = 1e-4, kGoodRatio = 0.75, kRoundOff = 1e-12;
+constexpr int kMaxHalvings = 10;
+constexpr double kMaxMoveOverRestLength = 0.25;
+constexpr int kMaxConjugateGradients = 200;
+constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
 
 // What a wall particle carries: max(P_T0, the largest |P| of a cell) x the mean area a wall particle owns.
 double pressure_load_N(const Simulation& sim) {
@@ -34,128 +36,171 @@ double pressure_load_N(const Simulation& sim) {
   return pressure * sim.surface().area_m2 / static_cast<double>(sim.state().wall.size());
 }
 
-// FIRE from the wall's positions now, for at most max_iterations force evaluations: steer the velocity
-// toward the force while going downhill, stop dead when uphill. Its losses are the kinetic energy the
-// steering and the stops take, the wall damping at the pseudo-velocities, and what is left at the end.
-Equilibrium fire(Simulation& sim, double tolerance, std::int64_t max_iterations) {
-  Equilibrium eq;
-  WallParticles& w = sim.mutable_state().wall;
-  const double mass = w.mass_kg, limit = sim.wall_spring_limit_s();
-  double step = kFirstStepOverLimit * limit, alpha = kAlphaStart, last_step = 0;
-  int downhill = 0;
-  w.v.setZero();
-  for (;; ++eq.iterations) {
-    sim.refresh_rates();
-    const Eigen::Matrix3Xd& force = sim.wall_force();
-    eq.loss_J += last_step * sim.power_W()[kDampingLoss];  // Eq 16 at the pseudo-velocities of the last step
-    eq.residual = std::sqrt(force.colwise().squaredNorm().maxCoeff()) / pressure_load_N(sim);
-    if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
-    const double kinetic_before = 0.5 * mass * w.v.squaredNorm();
-    if (force.cwiseProduct(w.v).sum() > 0) {
-      w.v = (1 - alpha) * w.v + (alpha * w.v.norm() / force.norm()) * force;
-      if (++downhill > kStepsBeforeGrowing) step = std::min(step * kStepGrow, limit), alpha *= kAlphaShrink;
-    } else {
-      w.v.setZero();
-      step *= kStepShrink;
-      alpha = kAlphaStart;
-      downhill = 0;
-    }
-    eq.loss_J += kinetic_before - 0.5 * mass * w.v.squaredNorm();
-    w.v += (step / mass) * force;
-    w.x += step * w.v;
-    last_step = step;
-  }
-  eq.loss_J += 0.5 * mass * w.v.squaredNorm();  // at equilibrium the wall is brought to rest
-  w.v.setZero();
-  eq.converged = eq.residual <= tolerance;
-  return eq;
-}
-
 using Flat = Eigen::Map<const Eigen::VectorXd>;
 Flat flat(const Eigen::Matrix3Xd& m) { return Flat(m.data(), m.size()); }
+Eigen::Map<const Eigen::Matrix3Xd> as_positions(const Eigen::VectorXd& v) {
+  return Eigen::Map<const Eigen::Matrix3Xd>(v.data(), 3, v.size() / 3);
+}
 
-// The wall's forces with its particles at x (one force evaluation; the rates follow).
-const Eigen::Matrix3Xd& forces_at(Simulation& sim, const Eigen::Matrix3Xd& x) {
-  sim.mutable_state().wall.x = x;
+// What the wall's laws write as they are evaluated (the plastic sliders, the middle lamella's damage):
+// the relaxation's probes and rejected trials must leave none of it, so it is kept at the last
+// accepted point and put back before every evaluation.
+struct WallHistory {
+  std::vector<double> plastic_elongation_m, lamella_peak_opening_m;
+  std::vector<char> lamella_intact;
+  double plastic_loss_J = 0;
+
+  static WallHistory of(const State& s) {
+    return {s.bond_plastic_elongation_m, s.lamella_peak_opening_m, s.lamella_intact, s.energy.integral[kPlasticLoss]};
+  }
+  void restore(State& s) const {
+    s.bond_plastic_elongation_m = plastic_elongation_m;
+    s.lamella_peak_opening_m = lamella_peak_opening_m;
+    s.lamella_intact = lamella_intact;
+    s.energy.integral[kPlasticLoss] = plastic_loss_J;
+  }
+};
+
+// One evaluation of the wall at positions x from the accepted history: its forces, and what the
+// relaxation descends, the potential: the stored energy of the wall (springs, bending, plates, contacts)
+// plus the fluid's, minus the work of the fluid's pressure along the volume's path in this increment
+// (cavity_fluid.hpp; the fluid's mass is slaved to V there, so M e(M/V) alone is not its potential).
+// `dissipated_J` is what the wall's history took (plastic flow, the lamella's damage) up to x.
+struct WallPoint {
+  Eigen::Matrix3Xd x, force;
+  double potential_J = 0, dissipated_J = 0;
+};
+
+const Eigen::Matrix3Xd& forces_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
+  State& s = sim.mutable_state();
+  s.wall.x = x;
+  history.restore(s);
   sim.refresh_rates();
   return sim.wall_force();
 }
 
+WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
+  WallPoint point{x, forces_at(sim, x, history)};
+  const EnergyValues e = sim.energy_terms_now();
+  point.potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
+  point.dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
+  return point;
+}
+
+double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
+
+// A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e
+// a difference of forces, preconditioned with the springs' stiffness plus the shift (Steihaug's truncated
+// CG). Where H + shift shows a direction p of negative curvature (a fold forming), the potential falls
+// along it however far one goes: the step follows it downhill to the trust radius (no particle farther
+// than max_move_m). Every step goes downhill at first (F.d > 0).
+struct NewtonDirection {
+  Eigen::VectorXd d;
+  double model_decrease_J = 0;  // F.d - d.H.d / 2, the quadratic model's promise
+  bool negative_curvature = false;
+};
+
+double longest_move_m(const Eigen::VectorXd& d) { return std::sqrt(as_positions(d).colwise().squaredNorm().maxCoeff()); }
+
+NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const WallHistory& history, double shift_N_m,
+                                 const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& preconditioner,
+                                 double max_move_m, std::int64_t& evaluations, std::int64_t max_evaluations) {
+  NewtonDirection out;
+  const Eigen::VectorXd f = flat(at.force);
+  out.d = Eigen::VectorXd::Zero(f.size());
+  Eigen::VectorXd Hd = Eigen::VectorXd::Zero(f.size());  // H d, unshifted, for the model's decrease
+  Eigen::VectorXd r = f, z = preconditioner.solve(r), p = z, Hp;
+  double rz = r.dot(z);
+  for (int cg = 0; cg < kMaxConjugateGradients && evaluations < max_evaluations; ++cg) {
+    const double probe = kProbe_m / p.cwiseAbs().maxCoeff();
+    Hp = -(flat(forces_at(sim, at.x + probe * as_positions(p), history)) - f) / probe;
+    ++evaluations;
+    const double pHp = p.dot(Hp);
+    if (!(pHp + shift_N_m * p.squaredNorm() > 0)) {
+      // Downhill along p to the trust radius: F.p > 0 for every CG direction (p.r_0 = p.r_k = r_k.z_k).
+      const double tau = max_move_m / longest_move_m(p);
+      out.negative_curvature = true;
+      out.model_decrease_J = f.dot(out.d + tau * p) - 0.5 * (out.d.dot(Hd) + 2 * tau * out.d.dot(Hp) + tau * tau * pHp);
+      out.d += tau * p;
+      return out;
+    }
+    const double alpha = rz / (pHp + shift_N_m * p.squaredNorm());
+    out.d += alpha * p;
+    Hd += alpha * Hp;
+    r -= alpha * (Hp + shift_N_m * p);
+    if (r.norm() <= kForcingTerm * f.norm()) break;
+    z = preconditioner.solve(r);
+    const double rz_next = r.dot(z);
+    p = z + (rz_next / rz) * p;
+    rz = rz_next;
+  }
+  out.model_decrease_J = f.dot(out.d) - 0.5 * out.d.dot(Hd);
+  return out;
+}
+
 }  // namespace
 
-// Inexact Newton: the step d solves H d = F (H = -dF/dx) by conjugate gradients, H p by a difference of
-// forces, preconditioned with the springs' stiffness (wall_stiffness.hpp), which holds the stiff part;
-// a direction of negative curvature (a fold forming) ends the inner solve (Steihaug). The step is taken
-// in full or halved until |F| falls. Where Newton stalls, FIRE takes over for a while. The loss is the
-// work the forces did along the path (trapezoid per step: what the stored energy lost).
+// Newton's method with a shift (Levenberg-Marquardt: the shift is a spring to the last accepted point,
+// so a shifted step is a relaxation with a viscous pull toward where the wall was) and a backtracking
+// line search on the potential: a step is halved until the potential falls by kArmijo of its first-order
+// promise F.d. The shift shrinks after a full step that fell as the model promised, grows after a
+// halved or failed one. No particle moves more than a quarter of a bond's rest length in one step. The
+// loss is the fall of the potential from start to end, less what the wall's history dissipated on the
+// way (plastic_loss_J, lamella_loss_J count that).
 Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations) {
   Equilibrium eq;
-  WallParticles& w = sim.mutable_state().wall;
-  w.v.setZero();
-  Eigen::Matrix3Xd x0 = w.x, F0 = forces_at(sim, x0), x1, F1;
+  State& s = sim.mutable_state();
+  s.wall.v.setZero();
+  WallHistory history = WallHistory::of(s);
+  WallPoint now = evaluate(sim, s.wall.x, history);
   ++eq.iterations;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> spring_stiffness;
+  const WallPoint start_point = now;
+  double mean_rest_length_m = 0;
+  for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
+  const double max_move_m =
+      kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> preconditioner;
   bool factored = false;
+  double shift_N_m = 0;
   while (true) {
-    eq.residual = std::sqrt(F0.colwise().squaredNorm().maxCoeff()) / pressure_load_N(sim);
+    eq.residual = largest_force_N(now.force) / pressure_load_N(sim);
     if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
     if (!factored) {
-      spring_stiffness.compute(wall_spring_stiffness(x0, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
-                                                     sim.plate_law(), sim.state().plates, kStiffnessShift_N_m));
-      factored = spring_stiffness.info() == Eigen::Success;
+      preconditioner.compute(wall_spring_stiffness(now.x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
+                                                   sim.plate_law(), s.plates, kStiffnessShift_N_m));
+      factored = true;
+      if (preconditioner.info() != Eigen::Success) throw std::logic_error("the springs' stiffness did not factor");
     }
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(F0.size());
-    if (factored) {
-      const Eigen::VectorXd f = flat(F0);
-      Eigen::VectorXd r = f, z = spring_stiffness.solve(r), p = z, Hp;
-      double rz = r.dot(z);
-      for (int cg = 0; cg < kMaxConjugateGradients && eq.iterations < max_iterations; ++cg) {
-        const double probe = kProbe_m / p.cwiseAbs().maxCoeff();
-        Eigen::Matrix3Xd moved = x0 + probe * Eigen::Map<const Eigen::Matrix3Xd>(p.data(), 3, x0.cols());
-        Hp = -(flat(forces_at(sim, moved)) - f) / probe;
-        ++eq.iterations;
-        const double curvature = p.dot(Hp);
-        if (!(curvature > 0)) {
-          if (cg == 0) d = p;
-          break;
-        }
-        const double alpha = rz / curvature;
-        d += alpha * p;
-        r -= alpha * Hp;
-        if (r.norm() <= kForcingTerm * f.norm()) break;
-        z = spring_stiffness.solve(r);
-        const double rz_next = r.dot(z);
-        p = z + (rz_next / rz) * p;
-        rz = rz_next;
-      }
-    }
+    NewtonDirection step =
+        newton_direction(sim, now, history, shift_N_m, preconditioner, max_move_m, eq.iterations, max_iterations);
+    const double longest_m = longest_move_m(step.d);
+    if (longest_m > max_move_m) step.d *= max_move_m / longest_m;
+    const double first_order_J = flat(now.force).dot(step.d);
+    const double round_off_J = kRoundOff * std::abs(now.potential_J);
+    double length = 1;
     bool accepted = false;
-    double step = 1;
-    for (int halving = 0; factored && halving < kMaxHalvings && eq.iterations < max_iterations; ++halving, step *= 0.5) {
-      x1 = x0 + step * Eigen::Map<const Eigen::Matrix3Xd>(d.data(), 3, x0.cols());
-      F1 = forces_at(sim, x1);
+    for (int halving = 0; halving <= kMaxHalvings && eq.iterations < max_iterations; ++halving, length *= 0.5) {
+      WallPoint trial = evaluate(sim, now.x + length * as_positions(step.d), history);
       ++eq.iterations;
-      if (F1.norm() < (1 - 1e-4 * step) * F0.norm()) {
-        accepted = true;
-        break;
-      }
+      const double fall_J = now.potential_J - trial.potential_J;
+      const bool downhill = fall_J >= kArmijo * length * first_order_J;
+      // Within the potential's round-off, the largest force decides.
+      const bool flat_and_better =
+          std::abs(fall_J) <= round_off_J && largest_force_N(trial.force) < largest_force_N(now.force);
+      if (!downhill && !flat_and_better) continue;
+      if (!step.negative_curvature && halving == 0 && fall_J >= kGoodRatio * step.model_decrease_J)
+        shift_N_m = shift_N_m / kShiftGrowth < kLeastShift_N_m ? 0.0 : shift_N_m / kShiftGrowth;
+      else if (halving > 0)
+        shift_N_m = std::max(kShiftGrowth * shift_N_m, kLeastShift_N_m);
+      now = std::move(trial);
+      history = WallHistory::of(s);
+      accepted = true;
+      break;
     }
-    if (accepted) {
-      eq.loss_J += 0.5 * (F0 + F1).cwiseProduct(x1 - x0).sum();
-      x0 = x1;
-      F0 = F1;
-      continue;
-    }
-    // Newton stalled (a fold, a contact switching): FIRE from x0 for a while, then Newton again.
-    w.x = x0;
-    const Equilibrium fired = fire(sim, tolerance, std::min(kFireIterations, max_iterations - eq.iterations));
-    eq.iterations += fired.iterations + 1;
-    eq.loss_J += fired.loss_J;
-    x0 = w.x;
-    F0 = sim.wall_force();
-    factored = false;
+    if (!accepted) shift_N_m = std::max(kShiftGrowth * shift_N_m, kLeastShift_N_m);
   }
-  forces_at(sim, x0);  // the rates at the equilibrium (the probes moved the particles)
+  forces_at(sim, now.x, history);  // the state and rates at the equilibrium (the probes moved the particles)
+  eq.loss_J = (start_point.potential_J + start_point.dissipated_J) - (now.potential_J + now.dissipated_J);
   eq.converged = eq.residual <= tolerance;
   return eq;
 }
@@ -163,20 +208,33 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
 void quasi_static_step(Simulation& sim) {
   const Params& p = sim.params();
   State& s = sim.mutable_state();
-  // The loads move at fixed particles: what that changes of the stored energy is put in (plate, drive).
-  const EnergyValues before = sim.energy_terms_now();
+  // The loads move at fixed particles (the plates, the drying ramp). Their work over the step is the
+  // trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
+  // stored energy: the rates of the last evaluation are the start's); the stored energy's jump at fixed
+  // particles is not that work: the plates' one-sided springs take k_pw (plate travel)^2 / 2 per touching
+  // particle at the start, which the relaxation gives back.
+  const EnergyValues power_at_start_W = sim.power_W();
+  const EnergyValues stored_before = sim.energy_terms_now();
   sim.advance_loads(p.dt_s);
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
-  const EnergyValues after = sim.energy_terms_now();
-  const double plate_J = after[kPlateSprings] - before[kPlateSprings];
-  s.energy.integral[kPlateWork] += plate_J;
-  s.energy.integral[kDrive] += stored_energy_J(after) - stored_energy_J(before) - plate_J;
+  const double jump_J = stored_energy_J(sim.energy_terms_now()) - stored_energy_J(stored_before);
 
   CavityFluid& cavity = sim.cavity_fluid();
   cavity.begin_increment(s, sim.fluid_context(), p.dt_s);
   const Equilibrium eq = relax_wall(sim, p.equilibrium_tolerance, p.relaxation_max_iterations);
-  s.energy.integral[kRelaxationLoss] += eq.loss_J;
+  const EnergyValues& power_at_end_W = sim.power_W();
+  double loads_J = 0;
+  for (EnergyTermId load : {kPlateWork, kDrive}) {
+    const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * p.dt_s;
+    s.energy.integral[load] += work_J;
+    loads_J += work_J;
+  }
+  // The relaxation took the potential down from the start's jump; what the loads did not put in of that
+  // jump it dissipated too (the account: stored energy now - before = loads' work - losses).
+  s.energy.integral[kRelaxationLoss] += eq.loss_J + loads_J - jump_J;
   s.energy.integral[kMassTransfer] += cavity.end_increment(s, sim.fluid_context());
+  s.relaxation_residual = eq.residual;
+  s.relaxation_evaluations = static_cast<double>(eq.iterations);
   if (!eq.converged) {
     std::ostringstream msg;
     msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "

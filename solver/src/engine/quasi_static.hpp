@@ -4,15 +4,20 @@
 // (backward Euler, one mass per cell), and relaxes the wall to equilibrium under them. The plates'
 // speed and L_p keep their meaning: a step is dt of physical time, a sequence of equilibria.
 //
-// The relaxation is FIRE (Bitzek et al. 2006, Phys. Rev. Lett. 97:170201) on the wall positions with
-// the wall's masses, its pseudo-step from the wall springs' stability limit. Equilibrium: the largest
+// The relaxation minimises the potential (the wall's stored energy, plates and contacts included, less
+// the fluid pressure's work along the volume's path in the increment) by Newton's method: conjugate
+// gradients on differences of forces, preconditioned with the springs' stiffness (wall_stiffness.hpp);
+// a shift (Levenberg-Marquardt) where the model fails; a step along a direction of negative curvature
+// where a fold forms (Steihaug); a backtracking line search on the potential. Equilibrium: the largest
 // force on a wall particle below time.equilibrium_tolerance x its pressure load, max(P_T0, |P|) x the
-// mean area a wall particle owns; its velocities are then zero.
+// mean area a wall particle owns; the wall is then at rest (no kinetic energy). Each step's test and
+// force evaluations are recorded (relaxation_residual, relaxation_evaluations).
 //
 // The energy account: the loads' moves are jumps at fixed particles (plate work: the plates' springs;
-// drive: P_T and L_ref), Eq 11's water a jump per step (cavity_fluid.hpp), and the relaxation's losses
-// (FIRE's steering and stops, the wall damping at pseudo-velocities, the kinetic energy left at
-// equilibrium) are measured as they happen: the residual is the relaxation's integration error.
+// drive: P_T and L_ref), Eq 11's water a jump per step (cavity_fluid.hpp), and the relaxation's loss is
+// the fall of the potential it brought about (what a real wall would have dissipated reaching rest under
+// a sudden load increment: it shrinks with time.dt_ns, the measure of how quasi-static the steps are).
+// The wall's history (plastic sliders, the lamella's damage) follows the accepted points only.
 #include <cstdint>
 
 namespace cellsim {
