@@ -45,6 +45,8 @@ def run_summary(path):
                 "settle_volume_ratio": float(a["settle_volume_ratio"]),
                 "drying_steady": bool(a["drying_steady"]), "drying_steady_time_us": float(a["drying_steady_time_s"]) * 1e6,
                 "compression_at_cap": int(a.get("compression_reached_end", -1)) == 0,
+                # V dP/dV at the end of drying (closed cells; NaN for SPH and for files from before it)
+                "volumetric_modulus_MPa": float(a.get("volumetric_modulus_Pa", np.nan)) / 1e6,
                 "warning": text(a["warning"])}
 
 

@@ -12,6 +12,7 @@
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
 #include "engine/steady_state.hpp"
+#include "engine/volumetric_modulus.hpp"
 #include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 #include "io/result_file.hpp"
@@ -171,6 +172,8 @@ void run_case(const Params& p, const RunOptions& options) {
                      drying.steady_time_s * 1e6, static_cast<long long>(sim.state().step));
     }
     drying.dried = drying_steps > 0 || (!options.from_path.empty() && !from_rest);
+    if (drying_steps > 0 || options.from_path.empty())  // else carried from the saved run
+      drying.volumetric_modulus_Pa = volumetric_modulus_Pa(sim);
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
     if (compression_steps > 0) {
       sim.start_compression();

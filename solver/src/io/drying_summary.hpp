@@ -14,6 +14,9 @@ struct DryingSummary {
                                     // for a cell only settled (drying.steps = 0), which has no cap to hit
   bool steady = false;              // drying ended at steady state (steady_state.hpp), not at its cap
   double steady_time_s = std::nan("");  // simulated time at which it did
+  // The cell's volumetric modulus V dP/dV at the end of drying (engine/volumetric_modulus.hpp; closed
+  // cells only, NaN for SPH).
+  double volumetric_modulus_Pa = std::nan("");
 
   // The warning a run, its file and the report show when drying hit its cap unsteady.
   std::string warning() const {

@@ -33,6 +33,7 @@ void write_run_summary(hid_t parent, const DryingSummary& d, const CompressionSu
   h5::set_attr(parent, "settle_volume_ratio", d.settle.volume_ratio);
   h5::set_attr(parent, "drying_steady", std::int64_t{d.steady});
   h5::set_attr(parent, "drying_steady_time_s", d.steady_time_s);
+  h5::set_attr(parent, "volumetric_modulus_Pa", d.volumetric_modulus_Pa);
   h5::set_attr(parent, "compression_reached_end", c.reached_code());
   h5::set_attr(parent, "compression_end_strain", c.strain);
   const std::string joined = d.warning() + (d.warning().empty() || c.warning().empty() ? "" : "; ") + c.warning();
@@ -94,6 +95,8 @@ SavedRun read_saved_run(const std::string& path) {
     d.settle.volume_ratio = h5::get_attr_double(file.id(), "settle_volume_ratio");
     d.steady = h5::get_attr_int(file.id(), "drying_steady") != 0;
     d.steady_time_s = h5::get_attr_double(file.id(), "drying_steady_time_s");
+    if (h5::has_attr(file.id(), "volumetric_modulus_Pa"))  // written before issue 46: none
+      d.volumetric_modulus_Pa = h5::get_attr_double(file.id(), "volumetric_modulus_Pa");
     h5::Handle g = h5::open_group(file.id(), "state");
     State& s = run.state;
     s.time_s = h5::get_attr_double(g.id(), "time_s");
