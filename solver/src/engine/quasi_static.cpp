@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "engine/simulation.hpp"
+#include "physics/plates.hpp"
 #include "physics/wall_stiffness.hpp"
 
 #include <Eigen/SparseCholesky>
@@ -153,6 +154,23 @@ NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const Wal
   return out;
 }
 
+// The plates' predictor: a plate that moves at fixed particles would thrust the particles it touches k_pw
+// (its travel) into its springs, hundreds of times the load they carry, and a relaxation from there may
+// settle on another branch (a soft wall dimples under the thrust). So each particle keeps the overlap it had
+// with each plate before the move (a particle the plate reaches anew sits at the edge of its range): the
+// touching wall moves with the plate, as it will at equilibrium.
+void move_touching_particles_with_plates(Simulation& sim, const Plates& before) {
+  Eigen::Matrix3Xd& x = sim.mutable_state().wall.x;
+  const Plates& after = sim.state().plates;
+  if (!after.active) return;
+  for (Eigen::Index k = 0; k < x.cols(); ++k) {
+    const PlateOverlap was = before.active ? plate_overlap(x.col(k), sim.plate_law(), before) : PlateOverlap{};
+    const PlateOverlap now = plate_overlap(x.col(k), sim.plate_law(), after);
+    if (now.top_m > was.top_m) x(2, k) -= now.top_m - was.top_m;
+    if (now.bottom_m > was.bottom_m) x(2, k) += now.bottom_m - was.bottom_m;
+  }
+}
+
 }  // namespace
 
 // Newton's method with a shift (Levenberg-Marquardt: the shift is a spring to the last accepted point,
@@ -222,14 +240,15 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
 void quasi_static_step(Simulation& sim) {
   const Params& p = sim.params();
   State& s = sim.mutable_state();
-  // The loads move at fixed particles (the plates, the drying ramp). Their work over the step is the
-  // trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
-  // stored energy: the rates of the last evaluation are the start's); the stored energy's jump at fixed
-  // particles is not that work: the plates' one-sided springs take k_pw (plate travel)^2 / 2 per touching
-  // particle at the start, which the relaxation gives back.
+  // The loads move (the plates, the drying ramp), the wall touching a plate with it (the predictor above).
+  // Their work over the step is the trapezoid of their powers at the two equilibria (the plate's force x its
+  // speed, the ramp's rate of the stored energy: the rates of the last evaluation are the start's); the
+  // relaxation's loss closes the account from the stored energy's jump over the move.
   const EnergyValues power_at_start_W = sim.power_W();
   const EnergyValues stored_before = sim.energy_terms_now();
+  const Plates plates_before = s.plates;
   sim.advance_loads(p.dt_s);
+  move_touching_particles_with_plates(sim, plates_before);
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
   const double jump_J = stored_energy_J(sim.energy_terms_now()) - stored_energy_J(stored_before);
 

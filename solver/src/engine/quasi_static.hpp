@@ -1,6 +1,6 @@
 #pragma once
 // The quasi-static scheme (time.scheme = quasi_static; a cavity fluid: cavity_fluid.hpp): each step of
-// time.dt_ns moves the loads at fixed particles (the plates, the drying ramp), integrates Eq 11 over it
+// time.dt_ns moves the loads (the plates, the drying ramp), integrates Eq 11 over it
 // (backward Euler, one mass per cell), and relaxes the wall to equilibrium under them. The plates'
 // speed and L_p keep their meaning: a step is dt of physical time, a sequence of equilibria.
 //
@@ -13,10 +13,12 @@
 // mean area a wall particle owns; the wall is then at rest (no kinetic energy). Each step's test and
 // force evaluations are recorded (relaxation_residual, relaxation_evaluations).
 //
-// The energy account: the loads' moves are jumps at fixed particles (plate work: the plates' springs;
-// drive: P_T and L_ref), Eq 11's water a jump per step (cavity_fluid.hpp), and the relaxation's loss is
-// the fall of the potential it brought about (what a real wall would have dissipated reaching rest under
-// a sudden load increment: it shrinks with time.dt_ns, the measure of how quasi-static the steps are).
+// A step moves the loads with the wall that touches a plate keeping its overlap (a plate pushed at fixed
+// particles would thrust them k_pw x its travel into its springs, and a soft wall relaxed from there
+// dimples onto another branch). The energy account: the loads' work is the trapezoid of their powers at
+// the two equilibria (plate work: its force x its speed; drive: the ramp of P_T and L_ref), Eq 11's water
+// a jump per step (cavity_fluid.hpp), and the relaxation's loss the rest: what the wall released in snaps
+// as it folded, and the trapezoid's error, which shrinks as dt^2.
 // The wall's history (plastic sliders, the lamella's damage) follows the accepted points only.
 #include <cstdint>
 
