@@ -20,9 +20,9 @@ namespace {
 // Newton's: the inner solve stops at |r| <= this x |F|, or after so many products; a product's probe
 // moves no particle farther than kProbe_m. The springs' stiffness gets kStiffnessShift_N_m on its
 // diagonal (the free motions between frictionless plates). The shift starts at kLeastShift_N_m where
-// it must and grows or shrinks by kShiftGrowth; a step is accepted where the potential falls by
-// kAcceptRatio of the model's promise (kGoodRatio: the shift shrinks), or, within round-off of the
-// potential, where the largest force falls.
+// it must and grows or shrinks by kShiftGrowth. A step is halved (at most kMaxHalvings times) until the
+// potential falls by kArmijo of its first-order promise F.d, or, within kRoundOff of the potential, until
+// the largest force falls; a full step that fell by kGoodRatio of the model's promise shrinks the shift.
 constexpr double kForcingTerm = 0.1, kProbe_m = 1e-11, kStiffnessShift_N_m = 1e-2;
 constexpr double kLeastShift_N_m = 1e-2, kShiftGrowth = 4, kArmijo = 1e-4, kGoodRatio = 0.75, kRoundOff = 1e-12;
 constexpr int kMaxHalvings = 10;
@@ -64,8 +64,8 @@ struct WallHistory {
 
 // One evaluation of the wall at positions x from the accepted history: its forces, and what the
 // relaxation descends, the potential: the stored energy of the wall (springs, bending, plates, contacts)
-// plus the fluid's, minus the work of the fluid's pressure along the volume's path in this increment
-// (cavity_fluid.hpp; the fluid's mass is slaved to V there, so M e(M/V) alone is not its potential).
+// less the work of the fluid's pressure along the volume's path in this increment, which is the fluid's
+// potential there (cavity_fluid.hpp; its mass is slaved to V, so M e(M/V) at the step's mass is not).
 // `dissipated_J` is what the wall's history took (plastic flow, the lamella's damage) up to x.
 struct WallPoint {
   Eigen::Matrix3Xd x, force;
