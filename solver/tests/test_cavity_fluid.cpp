@@ -259,6 +259,21 @@ TEST(CavityFluid, TheVolumetricModulusIsTheWallsWhateverK) {
   EXPECT_TRUE(std::isnan(volumetric_modulus_Pa(sph.sim)));
 }
 
+// The example of a closed cell (solver/examples/apple-closed-cell.json) validates without a warning and,
+// on a small wall, runs to its end strain with every step at equilibrium.
+TEST(QuasiStatic, TheClosedCellExampleRuns) {
+  cellsim::testing::ScratchDir dir("closed cell example");
+  const std::string example = std::string(CELLSIM_SOURCE_DIR) + "/solver/examples/apple-closed-cell.json";
+  const auto validated = cellsim::testing::run_cli({"validate", example}, dir);
+  EXPECT_EQ(validated.exit_code, 0) << validated.err;
+  EXPECT_EQ(validated.err.find("WARNING"), std::string::npos) << validated.err;
+  const auto ran = cellsim::testing::run_cli({"run", example, "-o", dir.file("out.h5"), "--quiet", "--set", "cell.n_wall=162",
+                                              "--set", "cell.diameter_um=40", "--set", "compression.end_strain=0.05"},
+                                             dir);
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("out.h5")));
+}
+
 // The contracts of test_fluid_model.cpp, for the closed cell: it writes only its own terms of the stored
 // energy (no particles: no kinetic share, no coupling potential), its turgor derivative matches a
 // difference, and it names the limit a time step exceeds.
