@@ -49,8 +49,9 @@ void run_stage(Simulation& sim, const std::function<void()>& step, std::int64_t 
 }
 
 // The keys a saved state may differ in from this case: compression and output act only after the
-// end of drying; the relaxation's iteration cap only stops a run, it never shapes a state. A state at rest (a run with drying.steps = 0) may also differ in the dryness and the
-// length of drying: at t = 0 the drying ramp is 0 (drying.hpp), so the settle does not see them.
+// end of drying; the relaxation's iteration cap only stops a run, it never shapes a state. A state at
+// rest (a run with drying.steps = 0) may also differ in the dryness and the length of drying: at t = 0
+// the drying ramp is 0 (drying.hpp), so the settle does not see them.
 bool may_differ(const std::string& section, const std::string& key, bool at_rest) {
   if (section == "compression" || section == "output") return true;
   if (section == "time" && key == "relaxation_max_iterations") return true;

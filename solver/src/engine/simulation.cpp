@@ -99,12 +99,13 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   s_.smoothing_length_m = *p.h0_m;
   s_.initial_fluid_mass_kg = fluid_->mass_kg(s_);
   s_.plates.first_contact_top_z_m = std::nan("");
-  wall_limit_s_ = wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
+  const double wall_limit_s =
+      wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
   // Known before the first step: bad input, not a blow-up (a quasi-static step is no leapfrog step).
-  if (p_.time_scheme == kDynamic && p_.dt_s > wall_limit_s_) {
+  if (p_.time_scheme == kDynamic && p_.dt_s > wall_limit_s) {
     std::ostringstream msg;
     msg << "time.dt_ns = " << p_.dt_s * 1e9 << ": exceeds the wall-spring stability limit of this case ("
-        << wall_limit_s_ * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
+        << wall_limit_s * 1e9 << " ns, from its stiffest wall particle); use a smaller time step";
     throw InputError(msg.str());
   }
   // D0 of Eq 6: the initial mesh's own equivalent diameter, so h = h0 exactly at t = 0.

@@ -86,10 +86,8 @@ class Simulation {
   const Eigen::Matrix3Xd& fluid_force() const { return fluid_->particle_force(); }
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
   void start_at_rest();
-  // For a relaxation of the wall (quasi_static.hpp): its step's stability limit (step_checks.hpp), the
-  // plates' law, the drying ramp now, the powers of the last force evaluation, what the fluid reads of
-  // the step, every term of the energy account now.
-  double wall_spring_limit_s() const { return wall_limit_s_; }
+  // For a relaxation of the wall (quasi_static.hpp): the plates' law, the drying ramp now, the powers of
+  // the last force evaluation, what the fluid reads of the step, every term of the energy account now.
   const PlateLaw& plate_law() const { return plate_law_; }
   double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
   const EnergyValues& power_W() const { return energy_power_W_; }
@@ -149,7 +147,6 @@ class Simulation {
   BondScratch bond_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
-  double wall_limit_s_ = 0;  // the wall springs' stability limit of a leapfrog step (step_checks.hpp)
   double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked
   PhaseTimer timer_;
 };
