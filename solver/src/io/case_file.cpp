@@ -276,15 +276,15 @@ void apply_override(json& doc, const std::string& assignment) {
 namespace {
 
 // The keys only one fluid model reads (fluid.model): SPH's particles, smoothing, viscosity, coupling,
-// closures and CFL-bound settle (engine/sph_fluid.hpp); the quasi-static relaxation's (quasi_static.hpp).
+// closures and CFL-bound settle (engine/sph_fluid.hpp); a closed cell's relaxations' (quasi_static.hpp,
+// read in the settle, the quasi-static steps and the volumetric modulus, whichever the time scheme).
 const std::vector<std::string> kSphOnlyKeys = {
     "cell.n_fluid", "cell.fill_gap_um", "fluid.viscosity_Pa_s", "fluid.density_diffusion", "fluid.h0_um",
     "fluid.h_over_dx", "heterogeneity.fluid_viscosity_cv", "coupling.model", "coupling.r0_um",
     "coupling.repulsion_f0_N_m", "coupling.attraction_f0_N_m", "coupling.attraction_cutoff_over_h",
     "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
     "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"};
-const std::vector<std::string> kQuasiStaticOnlyKeys = {"time.relaxation_max_iterations"};
-const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance"};
+const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance", "time.relaxation_max_iterations"};
 
 // Whether the case file gives `key` a value other than its default (a derived key: any value).
 bool given_away_from_default(const json& doc, const std::string& key) {
@@ -308,7 +308,6 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
   };
   if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
   if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);
-  if (p.time_scheme != kQuasiStatic) add(kQuasiStaticOnlyKeys);
   return ignored;
 }
 

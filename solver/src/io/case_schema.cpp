@@ -262,11 +262,13 @@ std::vector<ParamSpec> build_specs() {
              "moves the plates and the drying ramp and integrates Eq 11 over it, then relaxes the wall to "
              "equilibrium", "docs/model.md §9, engine/quasi_static.hpp"),
       real("time.equilibrium_tolerance", "1", 1.0, &P::equilibrium_tolerance, 1e-3, 0, false, 1, true,
-           "quasi_static (and a cavity's settle): a relaxation ends when the largest force on a wall particle is "
-           "below this fraction of its pressure load, max(P_T0, |P|) x the mean area a wall particle owns",
+           "a closed cell's relaxations (quasi_static steps, the settle, the volumetric modulus): one ends when the "
+           "largest force on a wall particle is below this fraction of its pressure load, max(P_T0, |P|) x the mean "
+           "area a wall particle owns",
            "engine/quasi_static.hpp"),
       integer("time.relaxation_max_iterations", &P::relaxation_max_iterations, 200000, 1, 1e9,
-              "quasi_static: the pseudo-steps one relaxation may take; beyond, the run stops (exit 3)",
+              "a closed cell's relaxations (quasi_static steps, the volumetric modulus): the force evaluations one may "
+              "take; beyond, the run stops (exit 3)",
               "engine/quasi_static.hpp"),
       // output
       integer("output.record_every", &P::record_every, 100, 1, 1e9,
