@@ -55,7 +55,15 @@ def criteria_text():
     return (f"Criteria: {'; '.join(parts)}; every compression keeps its energy account within "
             f"{percent(ENERGY_LIMIT)} of the plate work, and the pressure coupling's backstop carries under "
             f"{percent(BACKSTOP_LIMIT)} of the load.")
-GROUPING_AXES = ("coupling", "dryness")  # rows are grouped by these, in this order
+GROUPING_AXES = ("fluid", "coupling", "dryness")  # rows are grouped by these, in this order
+
+
+def without_unread_coupling(rows):
+    """The rows with a closed cell's coupling as "-": a cavity has no wall-fluid coupling to read."""
+    if "fluid" in rows.columns and "coupling" in rows.columns:
+        rows = rows.copy()
+        rows.loc[rows["fluid"] == "cavity", "coupling"] = "-"
+    return rows
 
 
 def refined_axis(config, study):
@@ -101,7 +109,7 @@ def observed_order(f1, f2, f3, r12, r23):
 def study_table(config, study, summary):
     """One row per case of the study, grouped, finest last, with the changes from the next coarser."""
     axis = refined_axis(config, study)
-    rows = rows_of(summary, study).copy()
+    rows = without_unread_coupling(rows_of(summary, study))
     rows["refinement"] = [refinement(r, axis) for _, r in rows.iterrows()]
     group_axes = [a for a in GROUPING_AXES if a in rows.columns]
     out = []
@@ -136,7 +144,7 @@ def comparisons(config, summary, target="convergence"):
     for study in config["studies"]:
         if target_of(config, study) != target or refined_axis(config, study):
             continue
-        rows = rows_of(summary, study)
+        rows = without_unread_coupling(rows_of(summary, study))
         axes = [a for a in GROUPING_AXES if a in config["studies"][study]["vary"]]
         out[study] = rows[axes + [m for m, _ in METRICS]].sort_values(axes, ascending=[True, False][:len(axes)])
     return out
@@ -203,6 +211,8 @@ def anchor_runs(config, cases):
 def readable(table):
     """The table with headings a reader understands and changes in %."""
     frame = table.drop(columns=["study", "refined_axis", "case"]).copy()
+    if "fluid" in frame.columns:  # a closed cell has no fluid particles: its level is its wall's
+        frame["n_fluid"] = frame["n_fluid"].astype(object).where(frame["fluid"] != "cavity", "-")
     for column in frame.columns:
         if column.startswith("change_"):
             frame[column] = 100 * frame[column]
@@ -245,6 +255,8 @@ def write_page(path, config, table, figure_files, compared=None, target="converg
              "h0 follows it at a fixed h0/dx), the time step, or sweeps a parameter (h0/dx, the fluid's bulk modulus "
              "K, the plate speed). Changes are relative to the previous case; the order p is "
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "
+             "A closed cell (fluid: cavity, solved quasi-statically) has no fluid particles and no coupling: its "
+             "level is its wall's, and it is the limit the SPH cells are measured against. "
              f"{criteria_text()} The load partition (F / (p A_c), the fluid's and the backstop's shares) is explained in "
              "docs/model.md §8.</p>"]
     if summary is not None:

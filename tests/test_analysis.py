@@ -36,8 +36,11 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     cases = matrix.expand(config)
     convergence = matrix.target_cases(config, cases, "convergence")
     # The LJ studies: 3 dryness x (3 levels + pressure at level 1 + dt 0.5 for both) = 18; the ladder and
-    # its anchors and sweeps: 32 more (config/config.yaml says which)
-    assert len(convergence) == 50
+    # its anchors and sweeps: 32 more (config/config.yaml says which); the closed cells: 19 more
+    assert len(convergence) == 69
+    closed = cases["D150_dt200_Fcavity_G18_P200_R2_t6_v1_X1"]  # the closed cell's coupled keys and the level's
+    assert closed.case["fluid"]["model"] == "cavity" and closed.case["time"]["scheme"] == "quasi_static"
+    assert closed.case["time"]["dt_ns"] == 200 and closed.case["cell"]["n_wall"] == 4134
     assert "Cpressure_D150_G18_P200_t6_v1_X0.5" in convergence  # a name: the coupling axis takes names
     ladder = cases["Cpressure_D150_dt0.5_G18_H1.2_P200_R3_t6_v1_X0.1"]  # a single-valued axis fixes a setting
     assert ladder.case["fluid"]["h_over_dx"] == 1.2 and ladder.case["time"]["dt_ns"] == 0.5
@@ -567,3 +570,18 @@ def test_the_tissue_tables_numerics_label_is_the_cases_own():
     assert tissue.numerics({"coupling.model": "pressure", "fluid.h_over_dx": 1.25}) == "pressure coupling, h0/dx 1.25"
     assert tissue.numerics({"coupling.model": "pressure", "fluid.h_over_dx": 1.2}) == "pressure coupling, h0/dx 1.2"
     assert tissue.numerics({"coupling.model": "lennard_jones", "fluid.h_over_dx": 0.888}) == "paper's (LJ)"
+
+
+def test_a_closed_cells_rows_show_no_coupling_and_no_fluid_particles(config):
+    """A cavity cell reads neither the coupling nor cell.n_fluid: its rows say so, and group apart from SPH."""
+    summary = convergence_summary(lambda h: 100.0, levels=((3082, 2067, 200.0), (8717, 4134, 200.0)))
+    summary["studies"] = "closed_cell_resolution"
+    summary["fluid"] = "cavity"
+    table = convergence.study_table(config, "closed_cell_resolution", summary)
+    assert list(table["coupling"]) == ["-", "-"] and list(table["n_wall"]) == [2067, 4134]
+    assert list(convergence.readable(table)["n_fluid"]) == ["-", "-"]  # shown so; the table keeps the count
+    assert table["change_smoothed_stress_kPa_at_0.05"].iloc[1] == 0  # still ordered by the level
+    verdict = convergence.verdicts(config, table)
+    assert list(verdict["fluid"]) == ["cavity"] and list(verdict["converged"]) == ["yes"]
+    sph = convergence.study_table(config, "convergence_resolution", convergence_summary(lambda h: 100.0).assign(fluid="sph"))
+    assert set(sph["coupling"]) == {"lennard_jones"} and list(convergence.readable(sph)["n_fluid"])[0] == 3082

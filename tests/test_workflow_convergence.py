@@ -37,6 +37,11 @@ def test_table_has_every_refinement_with_its_changes(convergence_run):
     pressure = table[table["coupling"] == "pressure"]
     assert pressure["compression_energy_residual_over_work"].abs().lt(0.01).all()  # the account closes
     assert pressure["load_backstop_share"].between(0, 0.5).all()
+    closed = table[table["study"].str.startswith("closed_cell")]
+    assert set(closed["fluid"]) == {"cavity"} and set(closed["coupling"]) == {"-"}
+    assert list(closed[closed["study"] == "closed_cell_resolution"]["n_wall"]) == [642, 1284]
+    assert sorted(closed[closed["study"] == "closed_cell_bulk_modulus"]["K_MPa"]) == [20, 2200]
+    assert closed["compression_energy_residual_over_work"].abs().lt(1e-6).all()  # closes by construction
 
 
 def test_anchors_table_has_each_anchor_against_its_analytic_value(convergence_run):
@@ -51,11 +56,12 @@ def test_anchors_table_has_each_anchor_against_its_analytic_value(convergence_ru
 def test_page_and_figures_are_written_and_the_default_target_is_not(root, convergence_run, tmp_path):
     page = (convergence_run / "report" / "convergence.html").read_text()
     for section in ("Verdicts", "Analytic anchors", "Resolution convergence", "Time-step convergence",
-                    "The two wall-fluid couplings", "Resolution convergence, pressure coupling"):
+                    "The two wall-fluid couplings", "Resolution convergence, pressure coupling",
+                    "The closed cell, quasi-static: two resolutions"):
         assert section in page, section
     config = workflow_config(root, CI + [REDUCED], convergence_run)
     figures = matrix.target_figures(config, "convergence")
-    assert figures == [f"conv{n:02d}" for n in range(1, 11)]
+    assert figures == [f"conv{n:02d}" for n in range(1, 13)]
     check_figures(config, convergence_run, root, tmp_path, figures)
     for fig in figures:
         assert f"figures/{fig}.png" in page
