@@ -44,7 +44,8 @@ Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3
     const double s_c = (x.col(h.c) - x.col(h.a)).dot(e) / length2, s_d = (x.col(h.d) - x.col(h.a)).dot(e) / length2;
     const std::array<Eigen::Vector3d, 4> g = {-(1 - s_c) * g_c - (1 - s_d) * g_d, -s_c * g_c - s_d * g_d, g_c, g_d};
     const std::array<int, 4> vertex = {h.a, h.b, h.c, h.d};
-    // d2/dtheta2 of (w/2) tan^2(theta/2) = (w/4)(1 + t^2)(1 + 3 t^2), t^2 = (1 - cos theta)/(1 + cos theta).
+    // Eq 20's hinge, (w/2) tan^2(theta/2) with w = k_b L_n: its d2/dtheta2 = (w/4)(1 + t^2)(1 + 3 t^2),
+    // t^2 = (1 - cos theta)/(1 + cos theta).
     const double cos_theta = N1.normalized().dot(N2.normalized());
     const double t2 = (1 - cos_theta) / (1 + cos_theta);
     const double curvature = weight_[n] / 4 * (1 + t2) * (1 + 3 * t2);
@@ -54,10 +55,11 @@ Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3
         const bool far_pair = i >= 2 && j >= 2;  // c-c, c-d, d-c, d-d: (g_c - g_d)(g_c - g_d)^T cancels c-d
         if (on_bonds && far_pair && i != j) continue;
         const double scale = on_bonds && far_pair ? 2 * curvature : curvature;
-        const Eigen::Matrix3d block = scale * g[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(j)].transpose();
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            entries.emplace_back(3 * vertex[static_cast<std::size_t>(i)] + r, 3 * vertex[static_cast<std::size_t>(j)] + c, block(r, c));
+        const auto gi = static_cast<std::size_t>(i), gj = static_cast<std::size_t>(j);
+        const Eigen::Matrix3d block = scale * g[gi] * g[gj].transpose();
+        for (int row = 0; row < 3; ++row)
+          for (int col = 0; col < 3; ++col)
+            entries.emplace_back(3 * vertex[gi] + row, 3 * vertex[gj] + col, block(row, col));
       }
   }
   Eigen::SparseMatrix<double> K(3 * x.cols(), 3 * x.cols());
