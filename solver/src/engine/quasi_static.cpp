@@ -91,9 +91,8 @@ WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory
 double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
 // The wall's stiffness (the springs', wall_stiffness.hpp, and the bending's on the bonds, bending.hpp)
-// factored once a relaxation, applied as its inverse. In single
-// precision: a preconditioner needs no more digits, and its triangular solves, which dominate a Newton
-// step, read half the memory.
+// factored once a relaxation, applied as its inverse. In single precision: a preconditioner needs no
+// more digits, and its triangular solves, which dominate a Newton step, read half the memory.
 class WallPreconditioner {
  public:
   void factor(const Eigen::SparseMatrix<double>& stiffness) {

@@ -29,6 +29,7 @@ double Bending::energy(const Eigen::Matrix3Xd& x) const {
 }
 
 Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners) const {
+  const bool on_bonds = far_corners == FarCorners::OnBonds;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(mesh_.hinges.size() * 16 * 9);
   for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
@@ -49,7 +50,6 @@ Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3
     const double cos_theta = N1.normalized().dot(N2.normalized());
     const double t2 = (1 - cos_theta) / (1 + cos_theta);
     const double curvature = weight_[n] / 4 * (1 + t2) * (1 + 3 * t2);
-    const bool on_bonds = far_corners == FarCorners::OnBonds;
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) {
         const bool far_pair = i >= 2 && j >= 2;  // c-c, c-d, d-c, d-d: (g_c - g_d)(g_c - g_d)^T cancels c-d
