@@ -90,14 +90,14 @@ WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory
 
 double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
-// The wall's stiffness (the springs', wall_stiffness.hpp, and the bending's on the bonds, bending.hpp)
-// factored once a relaxation, applied as its inverse. In single precision: a preconditioner needs no
-// more digits, and its triangular solves, which dominate a Newton step, read half the memory.
-class WallPreconditioner {
+// The springs' stiffness factored once a relaxation (wall_stiffness.hpp), applied as its inverse. In single
+// precision: a preconditioner needs no more digits, and its triangular solves, which dominate a Newton
+// step, read half the memory.
+class SpringPreconditioner {
  public:
   void factor(const Eigen::SparseMatrix<double>& stiffness) {
     ldlt_.compute(stiffness.cast<float>());
-    if (ldlt_.info() != Eigen::Success) throw std::logic_error("the wall's stiffness did not factor");
+    if (ldlt_.info() != Eigen::Success) throw std::logic_error("the springs' stiffness did not factor");
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& r) const { return ldlt_.solve(r.cast<float>()).cast<double>(); }
 
@@ -106,7 +106,7 @@ class WallPreconditioner {
 };
 
 // A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e
-// a difference of forces, preconditioned with the wall's stiffness plus the shift (Steihaug's truncated
+// a difference of forces, preconditioned with the springs' stiffness plus the shift (Steihaug's truncated
 // CG). Where H + shift shows a direction p of negative curvature (a fold forming), the potential falls
 // along it however far one goes: the step follows it downhill to the trust radius (no particle farther
 // than max_move_m). Every step goes downhill at first (F.d > 0).
@@ -119,7 +119,7 @@ struct NewtonDirection {
 double longest_move_m(const Eigen::VectorXd& d) { return std::sqrt(as_positions(d).colwise().squaredNorm().maxCoeff()); }
 
 NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const WallHistory& history, double shift_N_m,
-                                 const WallPreconditioner& preconditioner,
+                                 const SpringPreconditioner& preconditioner,
                                  double max_move_m, std::int64_t& evaluations, std::int64_t max_evaluations) {
   NewtonDirection out;
   const Eigen::VectorXd f = flat(at.force);
@@ -192,7 +192,7 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
-  WallPreconditioner preconditioner;
+  SpringPreconditioner preconditioner;
   bool factored = false;
   double shift_N_m = 0;
   while (true) {
@@ -200,8 +200,7 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
     if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
     if (!factored) {
       preconditioner.factor(wall_spring_stiffness(now.x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
-                                                   sim.plate_law(), s.plates, kStiffnessShift_N_m) +
-                            sim.bending().gauss_newton_stiffness(now.x, Bending::FarCorners::OnBonds));
+                                                   sim.plate_law(), s.plates, kStiffnessShift_N_m));
       factored = true;
     }
     NewtonDirection step =

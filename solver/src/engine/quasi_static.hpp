@@ -6,13 +6,12 @@
 //
 // The relaxation minimises the potential (the wall's stored energy, plates and contacts included, less
 // the fluid pressure's work along the volume's path in the increment) by Newton's method: conjugate
-// gradients on differences of forces, preconditioned with the springs' and the bending's stiffness
-// (wall_stiffness.hpp, bending.hpp); a shift (Levenberg-Marquardt) where the model fails; a step along a
-// direction of negative curvature where a fold forms (Steihaug); a backtracking line search on the
-// potential. Equilibrium: the largest force on a wall particle below time.equilibrium_tolerance x its
-// pressure load, max(P_T0, |P|) x the mean area a wall particle owns; the wall is then at rest (no kinetic
-// energy). Each step's test and force evaluations are recorded (relaxation_residual,
-// relaxation_evaluations).
+// gradients on differences of forces, preconditioned with the springs' stiffness (wall_stiffness.hpp);
+// a shift (Levenberg-Marquardt) where the model fails; a step along a direction of negative curvature
+// where a fold forms (Steihaug); a backtracking line search on the potential. Equilibrium: the largest
+// force on a wall particle below time.equilibrium_tolerance x its pressure load, max(P_T0, |P|) x the
+// mean area a wall particle owns; the wall is then at rest (no kinetic energy). Each step's test and
+// force evaluations are recorded (relaxation_residual, relaxation_evaluations).
 //
 // A step moves the loads with the wall that touches a plate keeping its overlap (a plate pushed at fixed
 // particles would thrust them k_pw x its travel into its springs, and a soft wall relaxed from there
