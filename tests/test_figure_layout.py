@@ -1,18 +1,20 @@
 """Every figure of the default and CI configs is readable whatever its legend: each data panel keeps at
-least MIN_PANEL_IN in the saved figure, and no legend covers more than MAX_LEGEND_SHARE of a panel.
-Curves are drawn from synthetic series (one per case of the figure); shapes and the model figure
-from one small real run, shared by every case."""
+least MIN_PANEL_IN in the saved figure, no legend covers more than MAX_LEGEND_SHARE of a panel, and
+the saved picture is no wider than the figure (a title or legend wider than the panels widened it).
+Curves are drawn from synthetic series (one per case of the figure), shrinkage and moduli from a
+synthetic summary, shapes and the model figure from one small real run, shared by every case."""
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
 from analysis import matrix, quantities
-from analysis.figures import curves, model, shapes
+from analysis.figures import curves, model, modulus, shapes, shrinkage
 from conftest import CI, workflow_config
 from figure_checks import data_panels
 
 MIN_PANEL_IN = (2.2, 2.0)  # width, height
 MAX_LEGEND_SHARE = 0.05
+MAX_WIDENING_IN = 0.02  # the saved picture beyond the figure's own width, either side
 
 
 def configs(root):
@@ -31,6 +33,15 @@ def synthetic_series(case, k):
     return pd.DataFrame(rows).assign(case=case.name, **case.values)
 
 
+def synthetic_summary(cases):
+    """A summary row per case: its axes' values, and a volume and moduli that vary across the cases."""
+    rows = [dict(case.values, case=case.name, dried_V_over_V0=0.3 + 0.7 * case.values.get("dryness", 1.0),
+                 dried_tissue_V_over_V0=0.35 + 0.7 * case.values.get("dryness", 1.0),
+                 modulus_MPa_nominal=0.2 + 0.1 * k, modulus_MPa_gauge=0.3 + 0.1 * k)
+            for k, case in enumerate(cases)]
+    return pd.DataFrame(rows)
+
+
 def draw(config, fig, root, small_run):
     """small_run: (result, dried state) that every case of a shapes or model figure is drawn from."""
     cases = matrix.expand(config)
@@ -39,6 +50,9 @@ def draw(config, fig, root, small_run):
     if family == "curves":
         series = pd.concat([synthetic_series(cases[n], k) for k, n in enumerate(names)], ignore_index=True)
         return curves.draw(config, fig, series, root)
+    if family in ("shrinkage", "modulus"):
+        summary = synthetic_summary([cases[n] for n in names])
+        return (shrinkage if family == "shrinkage" else modulus).draw(config, fig, summary, root)
     runs = {n: small_run for n in names}
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, {n: cases[n] for n in names})
 
@@ -67,6 +81,11 @@ def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path):
         figure = draw(config, fig, root, small_run)
         figure.savefig(tmp_path / f"{fig}.png", dpi=130, bbox_inches="tight")
         figure.canvas.draw()
+        saved = figure.get_tightbbox(figure.canvas.get_renderer())  # inches, as bbox_inches="tight" saves
+        assert saved.x0 >= -MAX_WIDENING_IN and saved.x1 <= figure.get_figwidth() + MAX_WIDENING_IN, \
+            f"{which} {fig} ({config['figures'][fig]['family']}): the saved picture spans x = {saved.x0:.2f} to " \
+            f"{saved.x1:.2f} in, beyond the figure's 0 to {figure.get_figwidth():.2f} in: " \
+            f"{[t.get_text()[:40] for t in widening_texts(figure)]}"
         panels = data_panels(figure)
         assert panels, f"{which} {fig}: no data panel"
         legends = [ax.get_legend() for ax in figure.axes if ax.get_legend()] + list(figure.legends)
@@ -82,6 +101,16 @@ def test_every_figure_keeps_its_panels_readable(root, small_runs, tmp_path):
         plt.close(figure)
         checked += 1
     assert checked == len(config["figures"]) >= 18
+
+
+def widening_texts(figure):
+    """The titles and legend entries drawn beyond the figure's left or right edge, to name in a failure."""
+    renderer, width = figure.canvas.get_renderer(), figure.get_figwidth() * figure.dpi
+    texts = list(figure.texts) + [ax.title for ax in figure.axes]
+    texts += [t for legend in [ax.get_legend() for ax in figure.axes] + list(figure.legends) if legend
+              for t in legend.get_texts()]
+    boxes = [(t, t.get_window_extent(renderer)) for t in texts if t.get_text()]
+    return [t for t, box in boxes if box.x0 < 0 or box.x1 > width]
 
 
 def test_shape_panels_share_one_scale(root, small_runs):

@@ -1,5 +1,6 @@
-"""Shared figure helpers: axis titles, value labels, ordering, saving."""
+"""Shared figure helpers: axis titles, value labels, ordering, the figure's title, saving."""
 import math
+import textwrap
 
 import matplotlib
 
@@ -102,6 +103,24 @@ def line_colours(n):
 
 def panel_letter(index):
     return "(" + "abcdefghijklmnopqrstuvwxyz"[index] + ")"
+
+
+# The title may take this share of the figure's width: the saved picture (bbox_inches="tight") grows to
+# hold whatever is drawn, so a title wider than the panels widened it beside them.
+TITLE_WIDTH_SHARE = 0.96
+
+
+def figure_title(figure, text, fontsize=11):
+    """The figure's title, broken into as many lines as it needs to fit the figure's width; with the
+    constrained layout the panels move down to make room for the extra lines."""
+    title = figure.suptitle(text, fontsize=fontsize)
+    renderer = figure.canvas.get_renderer()
+    room = TITLE_WIDTH_SHARE * figure.get_figwidth() * figure.dpi
+    columns = len(text)
+    while columns > 20 and title.get_window_extent(renderer).width > room:
+        columns = int(columns * min(0.95, room / title.get_window_extent(renderer).width))
+        title.set_text(textwrap.fill(text, columns, break_on_hyphens=False))
+    return title
 
 
 def save(figure, png, pdf):

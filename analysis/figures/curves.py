@@ -7,8 +7,8 @@ import numpy as np
 
 from analysis import quantities
 from analysis.ensembles import BAND_PERCENTILES, band
-from analysis.figures.common import (legend_below, line_colours, line_label, ordered, panel_letter, row_with_legend,
-                                     value_label)
+from analysis.figures.common import (figure_title, legend_below, line_colours, line_label, ordered, panel_letter,
+                                     row_with_legend, value_label)
 from analysis.references import load as load_reference
 
 
@@ -68,7 +68,7 @@ def draw(config, fig, series, root=".", overlay=None):
         if stage == "all" and x == "time_s":
             _mark_compression_start(ax, data)
     legend_below(legend_axes, axes)  # below the panels: it never covers a curve nor narrows a panel
-    figure.suptitle(spec["title"], fontsize=11)
+    figure_title(figure, spec["title"])
     return figure
 
 

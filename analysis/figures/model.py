@@ -3,6 +3,7 @@ fluid inside, with the plates; and a mid-plane slice beside it."""
 import numpy as np
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
+from analysis.figures.common import figure_title
 from analysis.figures.shapes import draw_slice
 from analysis.results import pick_snapshot
 
@@ -41,5 +42,5 @@ def draw(config, fig, runs, cases):
     ax2.set_title("(b) mid-plane slice at the start of compression", fontsize=8)
     ax2.set_xlabel("x [um]"), ax2.set_ylabel("z [um]")
     figure.subplots_adjust(wspace=0.3)
-    figure.suptitle(spec["title"] + f" ({case.name})", fontsize=10)
+    figure_title(figure, spec["title"] + f" ({case.name})", fontsize=10)
     return figure

@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 
 from analysis.aggregate import MODULUS_WINDOW, apparent_modulus
-from analysis.figures.common import (legend_below, line_colours, line_label, ordered, panel_letter, row_with_legend,
-                                     value_label)
+from analysis.figures.common import (figure_title, legend_below, line_colours, line_label, ordered, panel_letter,
+                                     row_with_legend, value_label)
 from analysis.quantities import MODULI as TITLES
 from analysis.references import load as load_reference
 
@@ -52,5 +52,5 @@ def draw(config, fig, summary, root="."):
         ax.set_ylabel(f"apparent modulus, strains {MODULUS_WINDOW[0]}-{MODULUS_WINDOW[1]} [MPa]")
         ax.grid(alpha=0.3, which="both")
     legend_below(legend_axes, axes)
-    figure.suptitle(spec["title"], fontsize=11)
+    figure_title(figure, spec["title"])
     return figure

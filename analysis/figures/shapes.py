@@ -5,7 +5,7 @@ cells nearest the tissue's centre, and each cell's wall has its own colour."""
 import numpy as np
 from matplotlib.collections import LineCollection
 
-from analysis.figures.common import grid, moment_label, ordered, panel_letter, value_label
+from analysis.figures.common import figure_title, grid, moment_label, ordered, panel_letter, value_label
 from analysis.results import pick_snapshot
 
 ROW_TIE_M = 20e-6  # rows this much nearer the middle than another count as equally near (rows are ~100 um apart)
@@ -122,5 +122,5 @@ def draw(config, fig, runs, cases):
         ax.set_ylim(-reach, reach)
     walls = "walls coloured by cell" if tissue else "wall green"
     period = ", the period dashed" if periodic else ""
-    figure.suptitle(spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black{period})", fontsize=10)
+    figure_title(figure, spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black{period})", fontsize=10)
     return figure

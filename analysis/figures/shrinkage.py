@@ -4,7 +4,7 @@ enclosed volume; a tissue's is the hull of all its walls (solid), with the sum o
 volumes dashed: the difference is the air the tissue takes in or loses (tissue figure 4)."""
 import numpy as np
 
-from analysis.figures.common import legend_below, line_colours, ordered, row_with_legend, value_label
+from analysis.figures.common import figure_title, legend_below, line_colours, ordered, row_with_legend, value_label
 from analysis.references import load_shrinkage
 
 
@@ -43,5 +43,5 @@ def draw(config, fig, summary, root="."):
     ax.set_ylabel("volume at the end of drying V/V0")
     ax.grid(alpha=0.3)
     legend_below(legend_axes, [ax])
-    figure.suptitle(spec["title"], fontsize=11)
+    figure_title(figure, spec["title"])
     return figure
