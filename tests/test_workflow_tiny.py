@@ -4,6 +4,12 @@ minute on 2 cores): every figure shows its data, the tables hold every case and 
 shows every figure and judges or names every claim. The same run is the reference the resumed run and
 the run through SLURM must equal (test_workflow_resume.py, test_slurm.py). The CI study's own checks
 (48 cases, the claims it can judge) are in test_workflow_ci.py, in the slow tier."""
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+
 from analysis import matrix
 from conftest import TINY, workflow_config
 from default_target_checks import check_default_figures, check_tables, report_claims
@@ -27,3 +33,28 @@ def test_report_shows_every_figure_and_every_claim(tiny_run):
     # The tiny matrix leaves out most cases a claim compares: those claims say so ('not run'); the rest are judged.
     assert set(claims["verdict"]) <= {"agree", "disagree", "not run", "not reached"}
     assert claims["verdict"].isin(["agree", "disagree"]).any()
+
+
+def test_the_reading_example_reads_a_case(root, tiny_run, tmp_path):
+    """docs/examples/read_results.py, as output-reference.md tells a reader to run it: it names the case's
+    stress at strain 0.05 from the summary, reads the same curve from the HDF5 file (its value there,
+    interpolated as the summary's, agrees) and draws it."""
+    summary = pd.read_csv(f"{tiny_run}/tables/summary.csv").set_index("case")
+    case = summary["stress_kPa_at_0.05"].dropna().index[-1]
+    curve = tmp_path / "curve.png"
+    done = subprocess.run([sys.executable, root / "docs/examples/read_results.py", tiny_run, case, "-o", curve],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert f"stress at strain 0.05 = {summary.loc[case, 'stress_kPa_at_0.05']:.1f} kPa" in done.stdout
+    assert "completed = 1" in done.stdout
+    assert curve.stat().st_size > 10_000
+
+    sys.path.insert(0, str(root / "docs/examples"))
+    from read_results import read_curve
+    strain, stress_kPa, _ = read_curve(f"{tiny_run}/runs/{case}.h5")
+    at = np.interp(0.05, strain.to_numpy(), stress_kPa.to_numpy())  # strain rises through the compression
+    assert np.isclose(at, summary.loc[case, "stress_kPa_at_0.05"], rtol=1e-6)
+
+    missing = subprocess.run([sys.executable, root / "docs/examples/read_results.py", tiny_run, "no_such_case"],
+                             capture_output=True, text=True, timeout=120)
+    assert missing.returncode != 0 and "no case 'no_such_case'" in missing.stderr
