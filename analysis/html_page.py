@@ -4,6 +4,8 @@ import html
 import os
 import pathlib
 
+from analysis import provenance
+
 
 STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
          ".wide{overflow-x:auto}table{border-collapse:collapse;font-size:80%}td,th{border:1px solid #ccc;padding:2px 5px}"
@@ -13,9 +15,11 @@ STYLE = ("body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em}"
 
 
 def write_page(path, title, parts):
-    """An HTML page of the report: its parts (HTML strings) in order, with the report's style."""
+    """An HTML page of the report: its parts (HTML strings) in order, with the report's style, under a
+    header naming the version and commit of the code that made it."""
+    header = f"<p class='meta'>Made by {html.escape(provenance.line())}.</p>"
     pathlib.Path(path).write_text(f"<!doctype html><html><head><meta charset='utf-8'><title>{html.escape(title)}"
-                                  f"</title><style>{STYLE}</style></head><body>{''.join(parts)}</body></html>\n")
+                                  f"</title><style>{STYLE}</style></head><body>{header}{''.join(parts)}</body></html>\n")
 
 
 def figure_list(config, figure_files, here):

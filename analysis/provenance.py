@@ -1,0 +1,30 @@
+"""Which code made a page: the project's version (CMakeLists.txt's `project(... VERSION x.y.z)`, the one
+place it is set; CITATION.cff and CHANGELOG.md repeat it, and tests/test_docs.py checks that they agree)
+and the git commit of the checkout, marked when the checkout had changes not yet committed."""
+import pathlib
+import re
+import subprocess
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+
+
+def version(root=ROOT):
+    match = re.search(r"project\(cellsim VERSION (\d+\.\d+\.\d+)", (pathlib.Path(root) / "CMakeLists.txt").read_text())
+    return match.group(1) if match else "unknown"
+
+
+def commit(root=ROOT):
+    """The checkout's commit (12 hex digits), '+ changes' if files differ from it; 'unknown' outside git."""
+    def git(*args):
+        done = subprocess.run(["git", "-C", str(root), *args], capture_output=True, text=True)
+        return done.stdout.strip() if done.returncode == 0 else None
+    head = git("rev-parse", "--short=12", "HEAD")
+    if not head:
+        return "unknown (not a git checkout)"
+    changed = git("status", "--porcelain", "--untracked-files=no")
+    return head + (" + changes not committed" if changed else "")
+
+
+def line(root=ROOT):
+    """'cellsim 0.2.0, commit 0123456789ab': what the header of every page of the report names."""
+    return f"cellsim {version(root)}, commit {commit(root)}"
