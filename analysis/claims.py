@@ -29,7 +29,8 @@ METHOD = (f"Curves are compared on a strain grid (step {GRID_STEP}) from {START_
           f"common range. point_value is the older measure at strain {STRAIN} on the raw curves.")
 
 
-def _pick(summary, **values):
+def rows_at(summary, **values):
+    """The summary's rows at these axis values (numbers compared to round-off, names exactly)."""
     rows = summary
     for axis, value in values.items():
         rows = rows[rows[axis] == value] if isinstance(value, str) else rows[np.isclose(rows[axis], value)]
@@ -37,7 +38,7 @@ def _pick(summary, **values):
 
 
 def _one(summary, column, **values):
-    rows = _pick(summary, **values)
+    rows = rows_at(summary, **values)
     return float(rows[column].iloc[0]) if len(rows) else np.nan
 
 
@@ -108,7 +109,7 @@ def evaluate(summary, base, series):
     empty = (np.array([]), np.array([]))
 
     def case_of(**values):
-        rows = _pick(summary, **at(**values))
+        rows = rows_at(summary, **at(**values))
         return rows["case"].iloc[0] if len(rows) else None
 
     def curve(column="plate_stress_Pa", **values):

@@ -1,5 +1,6 @@
-"""The reproduction report (HTML): intro, the paper's claims against this run, every figure with its
-caption, the run matrix, and the model closures. Sources: paper/report_intro.md, docs/model-closures.md."""
+"""The reproduction report (HTML): intro, the findings (this run's, then the project's), the paper's claims
+against this run, every figure with its caption, the run matrix, and the model closures. Sources:
+paper/report_intro.md, docs/findings.md, docs/model-closures.md."""
 import datetime
 import html
 import os
@@ -7,7 +8,7 @@ import pathlib
 
 import markdown
 
-from analysis import bounds, comparison
+from analysis import bounds, comparison, findings
 from analysis.claims import METHOD
 from analysis.html_page import cell_text, energy_box, write_page
 from analysis.matrix import figure_cases, figure_studies
@@ -112,6 +113,7 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
                      f"{html.escape(other_label)} (<code>{html.escape(other_dir)}</code>).</p>")
     parts.append(warnings_box(summary))
     parts.append(energy_box(summary))
+    parts.append(findings.section(config, summary, claim_rows, root))
     parts.append("<h2>The paper's claims and this run</h2>")
     parts.append(claims_table(claim_rows))
     if comparison.other(config):

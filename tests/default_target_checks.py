@@ -1,6 +1,8 @@
 """What a run of the default target must hold, whichever matrix it ran (the CI study, the tiny matrix):
 its 18 figures each showing their data, tables with every case and parameter, the report with every
 figure and every claim. The tests of each run add what is particular to its matrix."""
+import re
+
 import pandas as pd
 
 from analysis import matrix
@@ -44,4 +46,10 @@ def report_claims(out):
     assert "Model closures" in html and "wall-pressure closure" in html
     claims = pd.read_csv(out / "tables" / "claims.csv")
     assert len(claims) == 16
+    # The findings come first, this run's counted from its own claims table, and the header names the code.
+    assert html.index("<h2>Findings</h2>") < html.index("<h2>The paper's claims and this run</h2>")
+    counted = ", ".join(f"{n} {v}" for v, n in claims["verdict"].value_counts().reindex(
+        ["agree", "disagree", "not reached", "not run"]).dropna().astype(int).items() if n)
+    assert f"The paper's 16 claims: {counted}" in html
+    assert re.search(r"Made by cellsim \d+\.\d+\.\d+, commit [0-9a-f]{12}", html)
     return claims

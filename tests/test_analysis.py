@@ -7,8 +7,9 @@ import pandas as pd
 import pytest
 import yaml
 
-from analysis import aggregate, claims, convergence, matrix, quantities, references, tissue
+from analysis import aggregate, claims, convergence, findings, matrix, quantities, references, tissue
 from analysis.figures import common, curves
+from conftest import workflow_config
 
 
 @pytest.fixture(scope="module")
@@ -585,3 +586,39 @@ def test_a_closed_cells_rows_show_no_coupling_and_no_fluid_particles(config):
     assert list(verdict["fluid"]) == ["cavity"] and list(verdict["converged"]) == ["yes"]
     sph = convergence.study_table(config, "convergence_resolution", convergence_summary(lambda h: 100.0).assign(fluid="sph"))
     assert set(sph["coupling"]) == {"lennard_jones"} and list(convergence.readable(sph)["n_fluid"])[0] == 3082
+
+
+def test_the_reports_findings_count_this_runs_numbers(root):
+    """The report's own findings are this run's: its configuration and how far to trust it, its claims'
+    verdicts counted, the base cell's dried volumes and stresses, the energy account's range."""
+    config = workflow_config(root, [])
+    base = {axis: matrix.base_value(config, axis) for axis in config["axes"] if matrix.base_value(config, axis) is not None}
+    rows = [dict(base, dryness=x, dried_V_over_V0=v, compression_energy_residual_over_work=r,
+                 **{"smoothed_stress_kPa_at_0.05": s5, "smoothed_stress_kPa_at_0.10": s10})
+            for x, v, r, s5, s10 in [(1.0, 1.0, 0.004, 65.5, 122.7), (0.5, 0.517, -0.011, 40.0, 80.0),
+                                     (0.1, 0.269, 0.008, 30.0, 55.0)]]
+    rows.append(dict(rows[0], turgor_kPa=100, dried_V_over_V0=0.9))  # not the base cell: not quoted
+    summary = pd.DataFrame(rows)
+    verdicts = [{"verdict": v} for v in ["agree"] * 12 + ["disagree"] * 3 + ["not run"]]
+    text = " ".join(findings.this_run(config, summary, verdicts))
+    assert "lennard-jones coupling, resolution level 1" in text and "depend on the particle count" in text
+    assert "The paper's 16 claims: 12 agree, 3 disagree, 1 not run" in text
+    assert "V/V0: 0.517 at X/X0 = 0.5, 0.269 at X/X0 = 0.1 (the base cell)" in text
+    assert "65.5 kPa at strain 0.05 and 122.7 kPa at strain 0.10" in text
+    assert "residual 0.4-1.1 % of the plate work" in text
+
+    converged = yaml.safe_load((root / "config" / "converged.yaml").read_text())
+    config = workflow_config(root, ["config/converged.yaml"])
+    assert converged["base"]["coupling"]["model"] == "pressure"
+    text = " ".join(findings.this_run(config, summary, verdicts))
+    assert "pressure coupling, resolution level 2" in text and "converged up to strain 0.05" in text
+
+    config = workflow_config(root, ["config/ci.yaml"])  # reduced cells; their compressions stop at 0.1
+    summary["end_strain"] = 0.1
+    summary.loc[summary["dryness"] == 1.0, "smoothed_stress_kPa_at_0.10"] = np.nan
+    text = " ".join(findings.this_run(config, summary, verdicts))
+    assert "reduced cells (642 wall particles, coarser than the paper's level 1)" in text
+    assert "65.5 kPa at strain 0.05 (mean" in text and "nan" not in text
+
+    page = findings.section(config, summary, verdicts, root)
+    assert page.index("This run") < page.index("What the project's runs found") < page.index("Limitations")

@@ -36,18 +36,18 @@ def test_report_shows_every_figure_and_the_claims(ci_run):
     assert not_judged["claim"].iloc[0] == "X/X0 = 0.1 stays above X/X0 = 0.3 at strains above 0.1"
 
 
-def readme_new_axis(root):
-    """The README's example of a study on a new axis (between its new-axis markers), as YAML."""
-    block = between_markers((root / "README.md").read_text(), "new-axis")
+def documented_new_axis(root):
+    """docs/extending.md's example of a study on a new axis (between its new-axis markers), as YAML."""
+    block = between_markers((root / "docs" / "extending.md").read_text(), "new-axis")
     return textwrap.dedent(block.split("```yaml", 1)[1].split("```", 1)[0])
 
 
 def test_adding_the_readmes_new_axis_runs_only_the_new_cases(root, ci_run, tmp_path):
-    """Extending a finished study as the README shows reruns no case that was there: the plan over the
+    """Extending a finished study as docs/extending.md shows reruns no case that was there: the plan over the
     CI run holds the new cases' runs (kb1e-09 at X/X0 = 1 and 0.1: two compressions, two dryings, one
     settle) and the tables and report that gather them, nothing else."""
     extra = tmp_path / "new-axis.yaml"
-    extra.write_text(readme_new_axis(root))
+    extra.write_text(documented_new_axis(root))
     done = subprocess.run(workflow_command(ci_run, CI + [str(extra)], "-n", "--nolock"), cwd=root,
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]

@@ -1,0 +1,129 @@
+"""The numbers the findings, the README and the other documents quote are the ones their tables produce.
+Each range quoted in words (e.g. "11-21 % from level 2 to level 3") is computed here again from the table
+in docs/model-closures.md that it summarises, and each file that quotes it must quote that range: a
+table that changes, or a file that quotes another range, fails here."""
+import re
+
+import numpy as np
+import pytest
+
+
+def table(text, header_start):
+    """The rows (lists of cell strings) of the markdown table whose header begins with header_start."""
+    lines = text.splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(header_start))
+    rows = []
+    for line in lines[start + 2:]:
+        if not line.startswith("|"):
+            break
+        rows.append([cell.strip() for cell in line.strip("|").split("|")])
+    return rows
+
+
+def numbers(cell):
+    return [float(x) for x in re.findall(r"-?\d+(?:\.\d+)?", cell)]
+
+
+def percent_range(changes):
+    """'a-b' of the magnitudes in per cent, rounded as the documents write them."""
+    magnitudes = sorted(abs(c) * 100 for c in changes)
+    return f"{magnitudes[0]:.0f}-{magnitudes[-1]:.0f}"
+
+
+@pytest.fixture(scope="module")
+def docs(root):
+    names = ["README.md", "docs/findings.md", "docs/model-closures.md", "docs/targets.md", "CHANGELOG.md"]
+    return {name: (root / name).read_text() for name in names}
+
+
+def quoted_in(docs, phrase, names):
+    for name in names:
+        flat = " ".join(docs[name].split())  # line breaks aside
+        assert phrase in flat, f"{name} does not say '{phrase}'"
+
+
+def ladder(docs):
+    """{(X/X0, level): (stress at 0.05, stress at 0.10, peak force)} of the verification ladder."""
+    rows = table(docs["docs/model-closures.md"], "| X/X0 | level | stress at 0.05 kPa")
+    out, dryness = {}, None
+    for row in rows:
+        dryness = float(row[0]) if row[0] else dryness
+        if row[1].isdigit():
+            out[dryness, int(row[1])] = tuple(float(row[k]) for k in (2, 3, 4))
+    assert len(out) == 9
+    return out
+
+
+def test_the_resolution_ranges_are_the_ladders(docs):
+    values = ladder(docs)
+    dryness = (1.0, 0.5, 0.1)
+    change = lambda col, a, b: [values[x, b][col] / values[x, a][col] - 1 for x in dryness]  # noqa: E731
+    at_010_2_3 = percent_range(change(1, 2, 3))
+    at_010_1_3 = percent_range(change(1, 1, 3))
+    force_2_3 = percent_range(change(2, 2, 3))
+    assert (at_010_2_3, at_010_1_3, force_2_3) == ("11-21", "18-26", "12-15")
+    quoted_in(docs, f"by {at_010_2_3} % from level 2 to level 3", ["docs/findings.md", "docs/model-closures.md"])
+    quoted_in(docs, f"by {at_010_1_3} % from level 1 to level 3", ["docs/findings.md", "docs/targets.md"])
+    quoted_in(docs, f"-{at_010_2_3.replace('-', ' to -')} % from level 2 to 3", ["README.md"])
+    quoted_in(docs, f"peak force falls by {force_2_3} %", ["docs/findings.md"])
+    # The converged stress up to strain 0.05 (level 2) and level 3's change from it.
+    level_2 = ", ".join(f"{values[x, 2][0]:.1f} kPa" for x in dryness)
+    assert level_2 == "105.7 kPa, 83.4 kPa, 44.1 kPa"
+    quoted_in(docs, "level 2: 105.7 kPa fresh, 83.4 kPa at X/X0 = 0.5, 44.1 kPa at X/X0 = 0.1", ["docs/findings.md"])
+    fresh, half, dried = (f"{100 * c:.1f} %" for c in change(0, 2, 3))
+    quoted_in(docs, f"Level 3 reads {fresh}, {half} and {dried}", ["docs/findings.md"])
+
+
+def test_the_bulk_modulus_ranges_are_the_k_tables(docs):
+    closures = docs["docs/model-closures.md"]
+    rows = table(closures, "| level | X/X0 | K = 20 MPa")
+    below = {}
+    for row in rows:
+        at_20, water = numbers(row[2])[:2], numbers(row[-1])[:2]
+        below[int(row[0]), float(row[1])] = [a / w - 1 for a, w in zip(at_20, water)]
+    fresh_005 = percent_range([below[1, 1.0][0], below[2, 1.0][0]])
+    fresh_010 = percent_range([below[1, 1.0][1], below[2, 1.0][1]])
+    dried = tuple(f"{abs(100 * c):.0f}" for c in below[1, 0.1])
+    assert (fresh_005, fresh_010, dried) == ("12-27", "30-32", ("54", "49"))
+    for name in ("docs/findings.md", "docs/model-closures.md", "CHANGELOG.md"):
+        quoted_in(docs, f"{fresh_005} %", [name])
+        quoted_in(docs, f"{fresh_010} %", [name])
+        quoted_in(docs, f"{dried[0]} % / {dried[1]} %", [name])
+    quoted_in(docs, f"{fresh_005.split('-')[0]}-{dried[0]} % below water's K", ["README.md"])
+
+    # SPH at level 1: each doubling of K from 10 to 80 MPa (the fresh cell at 0.05, which levels off, aside).
+    sweep = re.search(r"K = 10 / 20 / 40 / 80 MPa\): fresh, (.*?) kPa at\s+strain 0\.05.*?and (.*?) at\s+0\.10; "
+                      r"X/X0 = 0\.1, (.*?) and (.*?)\. ", closures, re.S)
+    series = [numbers(group) for group in sweep.groups()]
+    doublings = [b / a - 1 for s in series[1:] for a, b in zip(s, s[1:])]
+    assert percent_range(doublings) == "9-34"
+    quoted_in(docs, "adds 9-34 %", ["docs/findings.md", "docs/model-closures.md", "CHANGELOG.md"])
+
+
+def test_the_drained_and_rate_ranges_are_their_tables(docs):
+    closures = docs["docs/model-closures.md"]
+    drained = [row for row in table(closures, "| X/X0 | compression L_p") if row[1] == "1e-6"]
+    against = [numbers(row[3]) for row in drained]
+    at_005 = percent_range([a[0] / 100 for a in against])
+    at_010 = percent_range([a[1] / 100 for a in against])
+    lost = sorted(numbers(row[4])[0] for row in drained)
+    assert (at_005, at_010) == ("32-42", "61-68")
+    quoted_in(docs, f"by {at_005} % at strain 0.05 and by {at_010} % at 0.10", ["docs/findings.md"])
+    quoted_in(docs, f"{lost[0]:.1f}-{lost[-1]:.1f} % of its water", ["docs/findings.md"])
+
+    ratios = [float(row[-1]) for row in table(closures, "| X/X0 | strain | 1 m/s")]
+    above = [r - 1 for r in ratios if r > 1]
+    assert percent_range(above) == "13-29" and min(ratios) == pytest.approx(0.89)
+    quoted_in(docs, "13-29 % above the 0.1 m/s curve", ["docs/findings.md", "README.md"])
+    quoted_in(docs, f"the 1 m/s curve reads {100 * (1 - min(ratios)):.0f} % lower", ["docs/findings.md"])
+
+
+def test_the_dried_state_is_the_drying_tables(docs):
+    rows = table(docs["docs/model-closures.md"], "| X/X0 | P_T0 kPa | steady at")
+    at_200 = {float(row[0]): row for row in rows if row[1] == "200"}
+    assert (at_200[0.5][4], at_200[0.1][4], at_200[0.1][3]) == ("0.517", "0.269", "0.229")
+    quoted_in(docs, "V/V0 = 0.517 of its volume at X/X0 = 0.5 and 0.269 at X/X0 = 0.1", ["docs/findings.md"])
+    quoted_in(docs, "M/M0 = 0.229 at X/X0 = 0.1", ["docs/findings.md"])
+    error = max(abs(float(row[6]) - float(row[7])) / float(row[1]) for row in rows)
+    assert error < 0.003  # "to 0.3 % of the turgor"
+    quoted_in(docs, "reaches its target to 0.3 % of the turgor", ["docs/findings.md"])
