@@ -16,7 +16,10 @@ def version(root=ROOT):
 def commit(root=ROOT):
     """The checkout's commit (12 hex digits), '+ changes' if files differ from it; 'unknown' outside git."""
     def git(*args):
-        done = subprocess.run(["git", "-C", str(root), *args], capture_output=True, text=True)
+        try:
+            done = subprocess.run(["git", "-C", str(root), *args], capture_output=True, text=True)
+        except OSError:  # no git on this machine
+            return None
         return done.stdout.strip() if done.returncode == 0 else None
     head = git("rev-parse", "--short=12", "HEAD")
     if not head:

@@ -1,5 +1,6 @@
 """The analysis package on its own: matrix expansion, quantities, references, metrics, claims, a figure."""
 import pathlib
+import re
 import subprocess
 
 import numpy as np
@@ -622,3 +623,13 @@ def test_the_reports_findings_count_this_runs_numbers(root):
 
     page = findings.section(config, summary, verdicts, root)
     assert page.index("This run") < page.index("What the project's runs found") < page.index("Limitations")
+
+
+def test_the_pages_name_the_code_that_made_them(root, tmp_path):
+    """The version is CMakeLists.txt's; the commit is the checkout's, and a copy outside git says so."""
+    from analysis import provenance
+    cmake = re.search(r"project\(cellsim VERSION ([\d.]+)", (root / "CMakeLists.txt").read_text()).group(1)
+    assert provenance.version(root) == cmake
+    assert re.fullmatch(r"[0-9a-f]{12}( \+ changes not committed)?", provenance.commit(root))
+    (tmp_path / "CMakeLists.txt").write_text("project(cellsim VERSION 9.8.7 LANGUAGES C CXX)\n")
+    assert provenance.line(tmp_path) == "cellsim 9.8.7, commit unknown (not a git checkout)"
