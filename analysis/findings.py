@@ -38,7 +38,8 @@ def configuration(config):
 def this_run(config, summary, claim_rows):
     """Sentences of this run's numbers (HTML list items)."""
     coupling, resolution, trust = configuration(config)
-    items = [f"{len(summary)} cases, {html.escape(coupling.replace('_', '-'))} coupling, "
+    name = {"lennard_jones": "Lennard-Jones"}.get(coupling, coupling)
+    items = [f"{len(summary)} cases, {html.escape(name)} coupling, "
              f"{html.escape(resolution, quote=False)}: {html.escape(trust, quote=False)}."]
     verdicts = [row["verdict"] for row in claim_rows]
     counts = ", ".join(f"{verdicts.count(v)} {v}" for v in ("agree", "disagree", "not reached", "not run")

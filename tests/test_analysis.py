@@ -602,7 +602,7 @@ def test_the_reports_findings_count_this_runs_numbers(root):
     summary = pd.DataFrame(rows)
     verdicts = [{"verdict": v} for v in ["agree"] * 12 + ["disagree"] * 3 + ["not run"]]
     text = " ".join(findings.this_run(config, summary, verdicts))
-    assert "lennard-jones coupling, resolution level 1" in text and "depend on the particle count" in text
+    assert "Lennard-Jones coupling, resolution level 1" in text and "depend on the particle count" in text
     assert "The paper's 16 claims: 12 agree, 3 disagree, 1 not run" in text
     assert "V/V0: 0.517 at X/X0 = 0.5, 0.269 at X/X0 = 0.1 (the base cell)" in text
     assert "65.5 kPa at strain 0.05 and 122.7 kPa at strain 0.10" in text
