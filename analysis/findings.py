@@ -45,18 +45,18 @@ def this_run(config, summary, claim_rows):
     counts = ", ".join(f"{verdicts.count(v)} {v}" for v in ("agree", "disagree", "not reached", "not run")
                        if verdicts.count(v))
     items.append(f"The paper's {len(verdicts)} claims: {counts} (the claims table below).")
-    base = {axis: matrix.base_value(config, axis) for axis in config["axes"]
-            if axis != "dryness" and axis in summary.columns and matrix.base_value(config, axis) is not None}
+    base = {axis: matrix.base_value(config, axis) for axis in config["axes"] if axis != "dryness" and axis in summary}
+    base = {axis: value for axis, value in base.items() if value is not None}
     cells = rows_at(summary, **base).sort_values("dryness", ascending=False)
     if len(cells):
         dried = ", ".join(f"{row.dried_V_over_V0:.3f} at X/X0 = {matrix.fmt(row.dryness)}"
                           for row in cells.itertuples() if row.dryness < 1)
         if dried:
             items.append(f"Volume at the end of drying, V/V0: {dried} (the base cell).")
-        fresh = cells[np.isclose(cells["dryness"], 1.0)]
-        reached = [f"{fresh.iloc[0][column]:.1f} kPa at strain {strain}" for strain in ("0.05", "0.10")
-                   for column in [f"smoothed_stress_kPa_at_{strain}"]
-                   if len(fresh) and column in fresh and np.isfinite(fresh.iloc[0][column])]
+        fresh = cells[np.isclose(cells["dryness"], 1.0)].head(1)
+        stress = {strain: fresh[f"smoothed_stress_kPa_at_{strain}"].iloc[0] for strain in ("0.05", "0.10")
+                  if len(fresh) and f"smoothed_stress_kPa_at_{strain}" in fresh}
+        reached = [f"{value:.1f} kPa at strain {strain}" for strain, value in stress.items() if np.isfinite(value)]
         if reached:
             items.append(f"The fresh base cell's plate stress: {' and '.join(reached)} (mean over +-0.01 strain).")
     residual = summary["compression_energy_residual_over_work"].abs().dropna()
