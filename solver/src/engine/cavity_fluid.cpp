@@ -120,6 +120,14 @@ void CavityFluid::couple_to_wall(State& s, const FluidContext& c, bool, Eigen::M
   }
 }
 
+std::vector<double> CavityFluid::volume_stiffness_Pa_m3(const EquationOfState& eos) const {
+  std::vector<double> stiffness(rho_.size());
+  for (std::size_t cell = 0; cell < rho_.size(); ++cell)
+    stiffness[cell] = increment_volume_stiffness_Pa_m3(rho_[cell], volume_m3_[cell],
+                                                       in_increment_ ? increment_a_m3_Pa_[cell] : 0.0, eos);
+  return stiffness;
+}
+
 void CavityFluid::kick(State& s, double half_dt, int) {
   for (std::size_t cell = 0; cell < dm_dt_.size(); ++cell) s.cavity_mass_kg[cell] += half_dt * dm_dt_[cell];
 }

@@ -50,6 +50,9 @@ class CavityFluid final : public FluidModel {
   // In an increment: the work the cells' pressures did on their walls since it began, sum of the
   // integral of P dV from each cell's volume then to its volume now (P a function of V alone there).
   double increment_work_J(const FluidContext& c) const;
+  // Per cell, -dP/dV at the last force evaluation: the volume spring the Newton steps' preconditioner adds
+  // (newton_preconditioner.hpp); in an increment, Eq 11's backward Euler softens it (drained: 0).
+  std::vector<double> volume_stiffness_Pa_m3(const EquationOfState& eos) const;
 
  private:
   double density_in_increment(int cell, double volume_m3, const EquationOfState& eos) const;

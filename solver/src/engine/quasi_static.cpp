@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
+#include "physics/cavity_pressure.hpp"
 #include "physics/plates.hpp"
 #include "physics/wall_stiffness.hpp"
-
-#include <Eigen/SparseCholesky>
 
 namespace cellsim {
 namespace {
@@ -28,6 +28,10 @@ constexpr double kLeastShift_N_m = 1e-2, kShiftGrowth = 4, kArmijo = 1e-4, kGood
 constexpr int kMaxHalvings = 10;
 constexpr double kMaxMoveOverRestLength = 0.25;
 constexpr int kMaxConjugateGradients = 200;
+// The preconditioner is factored afresh at the point a Newton step starts from when the last step's
+// conjugate gradients took more products than this or met negative curvature: where the wall folds, the
+// stiffness of the relaxation's start no longer holds (a snap), elsewhere it does for the whole step.
+constexpr int kRefactorAfterProducts = 20;
 constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
 
 // What a wall particle carries: max(P_T0, the largest |P| of a cell) x the mean area a wall particle owns.
@@ -90,36 +94,36 @@ WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory
 
 double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
-// The springs' stiffness factored once a relaxation (wall_stiffness.hpp), applied as its inverse. In single
-// precision: a preconditioner needs no more digits, and its triangular solves, which dominate a Newton
-// step, read half the memory.
-class SpringPreconditioner {
- public:
-  void factor(const Eigen::SparseMatrix<double>& stiffness) {
-    ldlt_.compute(stiffness.cast<float>());
-    if (ldlt_.info() != Eigen::Success) throw std::logic_error("the springs' stiffness did not factor");
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& r) const { return ldlt_.solve(r.cast<float>()).cast<double>(); }
-
- private:
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<float>> ldlt_;
-};
+// The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the cells'
+// pressures' follower stiffness and their volume springs.
+void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, NewtonPreconditioner& preconditioner) {
+  forces_at(sim, x, history);  // the cells' pressures and the surface at x (the last evaluation may be a probe's)
+  const State& s = sim.state();
+  const std::vector<double> pressure_Pa = sim.cell_mean_fluid_pressure_Pa();
+  Eigen::SparseMatrix<double> stiffness = wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
+                                                                sim.plate_law(), s.plates, kStiffnessShift_N_m);
+  stiffness += pressure_follower_stiffness(x, sim.mesh(), pressure_Pa);
+  Eigen::Matrix3Xd dV_dx(3, x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) dV_dx.col(k) = volume_gradient(sim.surface().vertex_normal.col(k));
+  preconditioner.factor(stiffness, flat(dV_dx), sim.cells(), sim.cavity_fluid().volume_stiffness_Pa_m3(sim.eos()));
+}
 
 // A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e
-// a difference of forces, preconditioned with the springs' stiffness plus the shift (Steihaug's truncated
-// CG). Where H + shift shows a direction p of negative curvature (a fold forming), the potential falls
+// a difference of forces, preconditioned with the wall's stiffness (newton_preconditioner.hpp): Steihaug's
+// truncated CG. Where H + shift shows a direction p of negative curvature (a fold forming), the potential falls
 // along it however far one goes: the step follows it downhill to the trust radius (no particle farther
 // than max_move_m). Every step goes downhill at first (F.d > 0).
 struct NewtonDirection {
   Eigen::VectorXd d;
   double model_decrease_J = 0;  // F.d - d.H.d / 2, the quadratic model's promise
   bool negative_curvature = false;
+  int products = 0;  // of H with a direction: force evaluations
 };
 
 double longest_move_m(const Eigen::VectorXd& d) { return std::sqrt(as_positions(d).colwise().squaredNorm().maxCoeff()); }
 
 NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const WallHistory& history, double shift_N_m,
-                                 const SpringPreconditioner& preconditioner,
+                                 const NewtonPreconditioner& preconditioner,
                                  double max_move_m, std::int64_t& evaluations, std::int64_t max_evaluations) {
   NewtonDirection out;
   const Eigen::VectorXd f = flat(at.force);
@@ -131,6 +135,7 @@ NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const Wal
     const double probe = kProbe_m / p.cwiseAbs().maxCoeff();
     Hp = -(flat(forces_at(sim, at.x + probe * as_positions(p), history)) - f) / probe;
     ++evaluations;
+    ++out.products;
     const double pHp = p.dot(Hp);
     if (!(pHp + shift_N_m * p.squaredNorm() > 0)) {
       // Downhill along p to the trust radius: F.p > 0 for every CG direction (p.r_0 = p.r_k = r_k.z_k).
@@ -192,19 +197,16 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
-  SpringPreconditioner preconditioner;
-  bool factored = false;
+  NewtonPreconditioner preconditioner;
+  bool refactor = true;
   double shift_N_m = 0;
   while (true) {
     eq.residual = largest_force_N(now.force) / pressure_load_N(sim);
     if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
-    if (!factored) {
-      preconditioner.factor(wall_spring_stiffness(now.x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
-                                                   sim.plate_law(), s.plates, kStiffnessShift_N_m));
-      factored = true;
-    }
+    if (refactor) factor_at(sim, now.x, history, preconditioner);
     NewtonDirection step =
         newton_direction(sim, now, history, shift_N_m, preconditioner, max_move_m, eq.iterations, max_iterations);
+    refactor = step.negative_curvature || step.products > kRefactorAfterProducts;
     const double longest_m = longest_move_m(step.d);
     if (longest_m > max_move_m) step.d *= max_move_m / longest_m;
     const double first_order_J = flat(now.force).dot(step.d);

@@ -6,7 +6,8 @@
 //
 // The relaxation minimises the potential (the wall's stored energy, plates and contacts included, less
 // the fluid pressure's work along the volume's path in the increment) by Newton's method: conjugate
-// gradients on differences of forces, preconditioned with the springs' stiffness (wall_stiffness.hpp);
+// gradients on differences of forces, preconditioned with the wall's stiffness without its bending
+// (newton_preconditioner.hpp), factored afresh where the last step's gradients struggled (a fold);
 // a shift (Levenberg-Marquardt) where the model fails; a step along a direction of negative curvature
 // where a fold forms (Steihaug); a backtracking line search on the potential. Equilibrium: the largest
 // force on a wall particle below time.equilibrium_tolerance x its pressure load, max(P_T0, |P|) x the

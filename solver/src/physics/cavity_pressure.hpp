@@ -48,4 +48,13 @@ inline double cavity_volume_stiffness_Pa_m3(double rho, double volume_m3, const 
   return eos.exponent * eos.bulk_modulus_Pa * std::pow(rho / eos.rho0_kg_m3, eos.exponent) / volume_m3;
 }
 
+// The same within an increment (implicit_cavity_density): differentiating rho V = M_n - a rho (P - P_T) at
+// fixed M_n, -dP/dV = rho P' / (V + a (P - P_T + rho P')), with rho P' = V k0 (k0 the sealed value above).
+// a = 0 gives k0; a drained cell (a = infinity) holds P = P_T whatever its volume: 0.
+inline double increment_volume_stiffness_Pa_m3(double rho, double volume_m3, double a_m3_Pa, const EquationOfState& eos) {
+  if (std::isinf(a_m3_Pa)) return 0;
+  const double rho_dP = volume_m3 * cavity_volume_stiffness_Pa_m3(rho, volume_m3, eos);
+  return rho_dP / (volume_m3 + a_m3_Pa * (eos.pressure(rho) - eos.turgor_Pa + rho_dP));
+}
+
 }  // namespace cellsim

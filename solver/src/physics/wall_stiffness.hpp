@@ -5,6 +5,8 @@
 // quasi_static.hpp's Newton steps precondition with (the stiff part, exact for the springs without
 // plastic flow), not the Hessian itself; shift_N_m on the diagonal keeps the free motions (sliding
 // between frictionless plates, turning about z) from making it singular.
+#include <vector>
+
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -18,5 +20,11 @@ namespace cellsim {
 Eigen::SparseMatrix<double> wall_spring_stiffness(const Eigen::Matrix3Xd& x, const WallMesh& mesh, const BondLaw& law,
                                                   double ramp, const PlateLaw& plate_law, const Plates& plates,
                                                   double shift_N_m);
+
+// The fluid's share, for closed cells of uniform pressure P (cavity_fluid.hpp): -P d2V/dx2 of each cell's
+// enclosed volume at fixed P, the follower stiffness of a pressure that turns with the wall. Symmetric,
+// indefinite; a cell's blocks join only the corners of its triangles (the bonds' pattern).
+Eigen::SparseMatrix<double> pressure_follower_stiffness(const Eigen::Matrix3Xd& x, const WallMesh& mesh,
+                                                        const std::vector<double>& cell_pressure_Pa);
 
 }  // namespace cellsim

@@ -1,0 +1,117 @@
+// The quasi-static Newton steps' preconditioner (engine/newton_preconditioner.hpp) and the stiffness it
+// factors beyond the springs (physics/wall_stiffness.hpp, physics/cavity_pressure.hpp): the pressure's
+// follower stiffness is minus the derivative of P dV/dx at fixed P, a cell's volume spring within an
+// increment is minus the derivative of its pressure along V, and the solve is the inverse of the sparse
+// part plus each cell's rank-one volume spring, shifted where the sparse part is not positive definite.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "engine/newton_preconditioner.hpp"
+#include "engine/simulation.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/tissue.hpp"
+#include "physics/cavity_pressure.hpp"
+#include "physics/wall_stiffness.hpp"
+#include "small_cell.hpp"
+
+using namespace cellsim;
+using cellsim::testing::small_cell_case;
+
+namespace {
+
+const EquationOfState kEos{200e3, 20e6, 1000, 7};
+
+// The small cell's wall moved off its sphere, so that no symmetry hides an error.
+Eigen::Matrix3Xd rough_wall(const Tissue& tissue) {
+  Eigen::Matrix3Xd x = tissue.wall_x;
+  for (Eigen::Index k = 0; k < x.cols(); ++k) x.col(k) *= 1.0 + 0.05 * std::sin(3.0 * k);
+  return x;
+}
+
+Eigen::VectorXd pressure_forces(const Eigen::Matrix3Xd& x, const WallMesh& mesh, double P) {
+  const WallSurface surface = wall_surface(x, mesh);
+  Eigen::Matrix3Xd f(3, x.cols());
+  for (Eigen::Index k = 0; k < x.cols(); ++k) f.col(k) = P * volume_gradient(surface.vertex_normal.col(k));
+  return Eigen::Map<const Eigen::VectorXd>(f.data(), f.size());
+}
+
+}  // namespace
+
+// K e_j = -(F(x + h e_j) - F(x - h e_j)) / 2h for F = P dV/dx at fixed P (central differences, to 1e-6
+// of the column's size), and K is symmetric.
+TEST(PressureFollowerStiffness, IsMinusTheDerivativeOfThePressuresForceAtFixedPressure) {
+  const Params p = small_cell_case();
+  const Tissue tissue = build_tissue(p);
+  const Eigen::Matrix3Xd x = rough_wall(tissue);
+  const double P = 3.0e5;
+  const Eigen::MatrixXd K = Eigen::MatrixXd(pressure_follower_stiffness(x, tissue.mesh, {P}));
+  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
+  const double h = 1e-10;
+  for (Eigen::Index j : {0, 5, 100, 241, 480}) {
+    Eigen::Matrix3Xd plus = x, minus = x;
+    plus(j % 3, j / 3) += h;
+    minus(j % 3, j / 3) -= h;
+    const Eigen::VectorXd fd = -(pressure_forces(plus, tissue.mesh, P) - pressure_forces(minus, tissue.mesh, P)) / (2 * h);
+    EXPECT_LT((K.col(j) - fd).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff()) << "column " << j;
+    EXPECT_GT(fd.cwiseAbs().maxCoeff(), 0.0);
+  }
+}
+
+// -dP/dV of a cell whose density is Eq 11's backward Euler (implicit_cavity_density) at fixed M_n and a:
+// central differences to 1e-5; a = 0 is the sealed value, a drained cell has none.
+TEST(CavityPressure, TheIncrementsVolumeStiffnessIsMinusTheDerivativeOfItsPressure) {
+  const double V = 1.7e-12, h = 1e-4 * V;  // above the density solve's round-off, far below V
+  for (double mass_over_rho0V : {0.98, 1.0, 1.01})
+    for (double a : {0.0, 1e-19, 1e-17, 1e-15}) {
+      const double M = mass_over_rho0V * 1000 * V;
+      const auto P = [&](double volume) { return kEos.pressure(implicit_cavity_density(M, volume, a, kEos)); };
+      const double fd = -(P(V + h) - P(V - h)) / (2 * h);
+      const double rho = implicit_cavity_density(M, V, a, kEos);
+      EXPECT_NEAR(increment_volume_stiffness_Pa_m3(rho, V, a, kEos), fd, 1e-5 * std::abs(fd))
+          << "M/(rho0 V) " << mass_over_rho0V << ", a " << a;
+      if (a == 0) EXPECT_DOUBLE_EQ(increment_volume_stiffness_Pa_m3(rho, V, a, kEos), cavity_volume_stiffness_Pa_m3(rho, V, kEos));
+    }
+  EXPECT_EQ(increment_volume_stiffness_Pa_m3(1000, V, INFINITY, kEos), 0.0);
+}
+
+// For two cells: solve(r) = (A + s I + sum_c k_c g_c g_c^T)^-1 r to 1e-9, with A the springs' and the
+// pressures' stiffness moved by a multiple of I: raised, A is positive definite and s = 0; lowered, the
+// cell's free motions and its bonds' untensioned sides are negative, and the shift s > 0 that made it
+// factor enters as stated.
+TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
+  const Params p = small_cell_case({{"fluid", {{"model", "cavity"}}}, {"tissue", {{"cells_x", 2}}}});
+  const Tissue tissue = build_tissue(p);
+  Simulation sim(p, tissue);
+  const Eigen::Matrix3Xd& x = sim.state().wall.x;
+  const Eigen::Index n = x.size();
+  const Eigen::SparseMatrix<double> springs =
+      wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e-2);
+  const Eigen::SparseMatrix<double> A = springs + pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5});
+  Eigen::VectorXd g(n);
+  for (Eigen::Index k = 0; k < x.cols(); ++k) g.segment<3>(3 * k) = volume_gradient(sim.surface().vertex_normal.col(k));
+  const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 0.0};  // the second cell drained
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+
+  Eigen::SparseMatrix<double> identity(n, n);
+  identity.setIdentity();
+  for (double lowered_N_m : {-1e3, 1e3}) {
+    const Eigen::SparseMatrix<double> factored = A - lowered_N_m * identity;
+    NewtonPreconditioner preconditioner;
+    preconditioner.factor(factored, g, sim.cells(), k_c);
+    if (lowered_N_m < 0) EXPECT_EQ(preconditioner.shift_N_m(), 0.0);
+    else EXPECT_GT(preconditioner.shift_N_m(), 0.0);
+    Eigen::MatrixXd dense = Eigen::MatrixXd(factored) + preconditioner.shift_N_m() * Eigen::MatrixXd::Identity(n, n);
+    for (int c = 0; c < 2; ++c) {
+      Eigen::VectorXd gc = Eigen::VectorXd::Zero(n);
+      const Eigen::Index first = 3 * sim.cells().wall[c], size = 3 * sim.cells().wall_count(c);
+      gc.segment(first, size) = g.segment(first, size);
+      dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
+    }
+    const Eigen::VectorXd expected = dense.ldlt().solve(r);
+    EXPECT_LT((preconditioner.solve(r) - expected).norm(), 1e-9 * expected.norm()) << "lowered by " << lowered_N_m;
+  }
+}
