@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "parallel/threads.hpp"
+
 namespace cellsim {
 namespace {
 
@@ -13,6 +15,7 @@ constexpr int kMaxShifts = 30;
 
 void NewtonPreconditioner::factor(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& volume_gradient,
                                   const CellRanges& cells, const std::vector<double>& volume_stiffness_Pa_m3) {
+  const SerialOpenMP serial;
   if (!analyzed_) {
     llt_.cholmod().print = 0;  // a matrix that is not positive definite is expected (a fold): shifted, not reported
     llt_.analyzePattern(stiffness);
@@ -40,6 +43,7 @@ void NewtonPreconditioner::factor(const Eigen::SparseMatrix<double>& stiffness, 
 
 // (A + k g g^T)^-1 r = A^-1 r - u (g . A^-1 r) / (1/k + g . u), u = A^-1 g, per cell (its rows alone).
 Eigen::VectorXd NewtonPreconditioner::solve(const Eigen::VectorXd& r) const {
+  const SerialOpenMP serial;
   Eigen::VectorXd z = llt_.solve(r);
   for (int c = 0; c < cells_->count(); ++c) {
     const double scale = scale_[static_cast<std::size_t>(c)];

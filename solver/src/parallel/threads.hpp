@@ -46,6 +46,23 @@ inline int team_size() {
 #endif
 }
 
+// Within its scope no parallel region gets more than one thread: for a library whose own OpenMP loops ask
+// for a fixed team whatever `--threads` says (CHOLMOD's: 4), so that a workflow's job keeps to its core.
+class SerialOpenMP {
+ public:
+#ifdef _OPENMP
+  SerialOpenMP() : levels_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
+  ~SerialOpenMP() { omp_set_max_active_levels(levels_); }
+#endif
+  SerialOpenMP(const SerialOpenMP&) = delete;
+  SerialOpenMP& operator=(const SerialOpenMP&) = delete;
+
+ private:
+#ifdef _OPENMP
+  int levels_;
+#endif
+};
+
 // The first of n items in block b of `blocks`: block b is [block_start(n, b), block_start(n, b + 1)).
 // Every loop of a step cuts its particles with this one rule, so a thread works on the same
 // particles in each (docs/performance.md, rule 1).
