@@ -4,6 +4,9 @@
 
 #include <map>
 #include <random>
+#include <set>
+
+#include <Eigen/Eigenvalues>
 
 #include "geometry/hull.hpp"
 #include "physics/bending.hpp"
@@ -177,4 +180,56 @@ TEST(Bending, TheWallsGoldenSpiralMeshBendsLikeAContinuumOfAQuarterKb) {
         EXPECT_NEAR(rolled_bending_rigidity(sheet, bending, R, angle) / kb, 0.244, 0.004)
             << "n " << n << " R " << R << " angle " << angle;
   }
+}
+
+// On a flat sheet E_b'(theta) = 0, so the Gauss-Newton stiffness is the whole Hessian: v.K.v is the
+// energy's second difference along any v (here out of the plane, random); and on a bent cell it is
+// symmetric, positive semi-definite and blind to a translation.
+TEST(Bending, TheGaussNewtonStiffnessIsTheHessianOfAFlatSheet) {
+  const double kb = 1e-10, spacing = 1e-6;
+  const FlatSheet sheet(golden_spiral_disc(300, spacing), 0.85 * spacing * std::sqrt(300.0));
+  const Bending bending(sheet.mesh, kb);
+  const Eigen::SparseMatrix<double> K = bending.gauss_newton_stiffness(sheet.x, Bending::FarCorners::Coupled);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 3; ++trial) {
+    Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, sheet.x.cols());
+    for (Eigen::Index i = 0; i < v.cols(); ++i) v(2, i) = u(rng);
+    const Eigen::VectorXd flat_v = Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    const double eps = 1e-9;  // m: 0.1 % of the spacing
+    const double second = (bending.energy(sheet.x + eps * v) + bending.energy(sheet.x - eps * v) - 2 * bending.energy(sheet.x)) /
+                          (eps * eps);
+    EXPECT_NEAR(flat_v.dot(K * flat_v), second, 1e-4 * second) << "trial " << trial;
+  }
+  BumpyCell cell;
+  const Eigen::MatrixXd bent = Eigen::MatrixXd(Bending(cell.mesh, kb).gauss_newton_stiffness(cell.x, Bending::FarCorners::Coupled));
+  EXPECT_LT((bent - bent.transpose()).norm(), 1e-12 * bent.norm());
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(bent).eigenvalues().minCoeff(), -1e-9 * bent.norm());
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(bent.rows());
+  for (Eigen::Index i = 0; i < shift.size(); i += 3) shift(i) = 1;  // every particle moved along x
+  EXPECT_LT((bent * shift).norm(), 1e-12 * bent.norm() * shift.norm());
+}
+
+// The preconditioner's version: nothing between particles no bond joins (the springs' sparsity), and
+// above the exact Gauss-Newton stiffness (their difference positive semi-definite).
+TEST(Bending, TheStiffnessOnTheBondsKeepsTheirSparsityAndBoundsTheExactOneFromAbove) {
+  BumpyCell cell;
+  const Bending bending(cell.mesh, 1e-10);
+  const Eigen::SparseMatrix<double> on_bonds = bending.gauss_newton_stiffness(cell.x, Bending::FarCorners::OnBonds);
+  std::set<std::pair<Eigen::Index, Eigen::Index>> bonded;
+  for (const auto& b : cell.mesh.bonds) {
+    bonded.insert({b[0], b[1]});
+    bonded.insert({b[1], b[0]});
+  }
+  int off_bonds = 0;
+  for (int k = 0; k < on_bonds.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(on_bonds, k); it; ++it) {
+      const Eigen::Index i = it.row() / 3, j = it.col() / 3;
+      if (i != j && !bonded.count({i, j}) && it.value() != 0) ++off_bonds;
+    }
+  EXPECT_EQ(off_bonds, 0);
+  const Eigen::MatrixXd excess =
+      Eigen::MatrixXd(on_bonds) - Eigen::MatrixXd(bending.gauss_newton_stiffness(cell.x, Bending::FarCorners::Coupled));
+  EXPECT_GT(excess.norm(), 0);  // the far corners' coupling was there to move
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(excess).eigenvalues().minCoeff(), -1e-9 * excess.norm());
 }

@@ -128,6 +128,13 @@ std::vector<double> CavityFluid::volume_stiffness_Pa_m3(const EquationOfState& e
   return stiffness;
 }
 
+Eigen::VectorXd CavityFluid::volume_gradients(const WallSurface& surface) {
+  Eigen::VectorXd g(surface.vertex_normal.size());
+  for (Eigen::Index k = 0; k < surface.vertex_normal.cols(); ++k)
+    g.segment<3>(3 * k) = volume_gradient(surface.vertex_normal.col(k));
+  return g;
+}
+
 void CavityFluid::kick(State& s, double half_dt, int) {
   for (std::size_t cell = 0; cell < dm_dt_.size(); ++cell) s.cavity_mass_kg[cell] += half_dt * dm_dt_[cell];
 }

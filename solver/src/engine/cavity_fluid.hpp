@@ -53,6 +53,8 @@ class CavityFluid final : public FluidModel {
   // Per cell, -dP/dV at the last force evaluation: the volume spring the Newton steps' preconditioner adds
   // (newton_preconditioner.hpp); in an increment, Eq 11's backward Euler softens it (drained: 0).
   std::vector<double> volume_stiffness_Pa_m3(const EquationOfState& eos) const;
+  // dV/dx of each cell's enclosed volume on its wall particles, stacked (x, y, z per particle) [m^2].
+  static Eigen::VectorXd volume_gradients(const WallSurface& surface);
 
  private:
   double density_in_increment(int cell, double volume_m3, const EquationOfState& eos) const;

@@ -1,8 +1,9 @@
 #pragma once
-// The quasi-static Newton steps' preconditioner (quasi_static.hpp): the wall's stiffness without its
-// bending, a tissue's contacts and the middle lamella, that is the springs (wall_stiffness.hpp), the
-// follower stiffness of each closed cell's pressure, -P d2V/dx2, and each cell's volume spring
-// k_c g_c g_c^T (g_c = dV_c/dx, k_c = -dP_c/dV_c; cavity_fluid.hpp). The sparse part is factored by
+// The quasi-static Newton steps' preconditioner (quasi_static.hpp): the wall's stiffness without a
+// tissue's contacts and the middle lamella, that is the springs (wall_stiffness.hpp), the bending's
+// Gauss-Newton part on the bonds' pattern (bending.hpp), the follower stiffness of each closed cell's
+// pressure, -P d2V/dx2, and each cell's volume spring k_c g_c g_c^T (g_c = dV_c/dx, k_c = -dP_c/dV_c;
+// cavity_fluid.hpp). The sparse part is factored by
 // CHOLMOD's supernodal Cholesky, its ordering found once; where the wall folds and the matrix is not
 // positive definite, a shift on its diagonal grows until it is. The volume springs join all of a cell's
 // particles and would fill the factor: they enter by Sherman-Morrison, one rank a cell, exact because
@@ -19,7 +20,7 @@ namespace cellsim {
 
 class NewtonPreconditioner {
  public:
-  // stiffness: the sparse part, of the same pattern at every call; volume_gradient: g stacked over the
+  // stiffness: the sparse part, of the same pattern at every call (its ordering is found at the first); volume_gradient: g stacked over the
   // wall particles (each cell's on its own particles); volume_stiffness_Pa_m3: k_c per cell.
   void factor(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& volume_gradient,
               const CellRanges& cells, const std::vector<double>& volume_stiffness_Pa_m3);

@@ -10,7 +10,6 @@
 #include "core/errors.hpp"
 #include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
-#include "physics/cavity_pressure.hpp"
 #include "physics/plates.hpp"
 #include "physics/wall_stiffness.hpp"
 
@@ -94,8 +93,8 @@ WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory
 
 double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
-// The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the cells'
-// pressures' follower stiffness and their volume springs.
+// The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the bending's
+// Gauss-Newton part on the bonds, the cells' pressures' follower stiffness and their volume springs.
 void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, NewtonPreconditioner& preconditioner) {
   forces_at(sim, x, history);  // the cells' pressures and the surface at x (the last evaluation may be a probe's)
   const State& s = sim.state();
@@ -103,9 +102,10 @@ void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& hi
   Eigen::SparseMatrix<double> stiffness = wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
                                                                 sim.plate_law(), s.plates, kStiffnessShift_N_m);
   stiffness += pressure_follower_stiffness(x, sim.mesh(), pressure_Pa);
-  Eigen::Matrix3Xd dV_dx(3, x.cols());
-  for (Eigen::Index k = 0; k < x.cols(); ++k) dV_dx.col(k) = volume_gradient(sim.surface().vertex_normal.col(k));
-  preconditioner.factor(stiffness, flat(dV_dx), sim.cells(), sim.cavity_fluid().volume_stiffness_Pa_m3(sim.eos()));
+  stiffness += sim.bending().gauss_newton_stiffness(x, Bending::FarCorners::OnBonds);
+  const CavityFluid& cavity = sim.cavity_fluid();
+  preconditioner.factor(stiffness, CavityFluid::volume_gradients(sim.surface()), sim.cells(),
+                        cavity.volume_stiffness_Pa_m3(sim.eos()));
 }
 
 // A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e

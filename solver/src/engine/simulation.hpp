@@ -57,6 +57,7 @@ class Simulation {
   }
   const WallMesh& mesh() const { return mesh_; }
   const BondLaw& bond_law() const { return bond_law_; }
+  const Bending& bending() const { return bending_; }
   const FluidModel& fluid() const { return *fluid_; }
   // The SPH fluid of the case; throws std::logic_error if its fluid is another model.
   const SphFluid& sph_fluid() const;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <numeric>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -25,6 +26,45 @@ double Bending::energy(const Eigen::Matrix3Xd& x) const {
     e += 0.5 * weight_[n] * (1.0 - c) / (1.0 + c);
   }
   return e;
+}
+
+Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners) const {
+  const bool on_bonds = far_corners == FarCorners::OnBonds;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(mesh_.hinges.size() * 16 * 9);
+  for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
+    const Hinge& h = mesh_.hinges[n];
+    const Eigen::Vector3d e = x.col(h.b) - x.col(h.a);
+    const double length2 = e.squaredNorm();
+    const Eigen::Vector3d N1 = e.cross(x.col(h.c) - x.col(h.a));  // triangle (a, b, c)
+    const Eigen::Vector3d N2 = (-e).cross(x.col(h.d) - x.col(h.b));  // triangle (b, a, d)
+    // Lifting c by dz along n1 turns its triangle by dz / (its height over the edge) = dz |e| / |N1|; a and
+    // b share the turn by where c's foot falls on the edge (s_c from a).
+    const Eigen::Vector3d g_c = std::sqrt(length2) / N1.squaredNorm() * N1;
+    const Eigen::Vector3d g_d = std::sqrt(length2) / N2.squaredNorm() * N2;
+    const double s_c = (x.col(h.c) - x.col(h.a)).dot(e) / length2, s_d = (x.col(h.d) - x.col(h.a)).dot(e) / length2;
+    const std::array<Eigen::Vector3d, 4> g = {-(1 - s_c) * g_c - (1 - s_d) * g_d, -s_c * g_c - s_d * g_d, g_c, g_d};
+    const std::array<int, 4> vertex = {h.a, h.b, h.c, h.d};
+    // Eq 20's hinge, (w/2) tan^2(theta/2) with w = k_b L_n: its d2/dtheta2 = (w/4)(1 + t^2)(1 + 3 t^2),
+    // t^2 = (1 - cos theta)/(1 + cos theta).
+    const double cos_theta = N1.normalized().dot(N2.normalized());
+    const double t2 = (1 - cos_theta) / (1 + cos_theta);
+    const double curvature = weight_[n] / 4 * (1 + t2) * (1 + 3 * t2);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const bool far_pair = i >= 2 && j >= 2;  // c-c, c-d, d-c, d-d: (g_c - g_d)(g_c - g_d)^T cancels c-d
+        if (on_bonds && far_pair && i != j) continue;
+        const double scale = on_bonds && far_pair ? 2 * curvature : curvature;
+        const auto gi = static_cast<std::size_t>(i), gj = static_cast<std::size_t>(j);
+        const Eigen::Matrix3d block = scale * g[gi] * g[gj].transpose();
+        for (int row = 0; row < 3; ++row)
+          for (int col = 0; col < 3; ++col)
+            entries.emplace_back(3 * vertex[gi] + row, 3 * vertex[gj] + col, block(row, col));
+      }
+  }
+  Eigen::SparseMatrix<double> K(3 * x.cols(), 3 * x.cols());
+  K.setFromTriplets(entries.begin(), entries.end());
+  return K;
 }
 
 void Bending::add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const {

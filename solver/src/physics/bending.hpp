@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "geometry/surface.hpp"  // the triangle normals, computed once a step
 #include "geometry/wall_mesh.hpp"
@@ -21,6 +22,15 @@ class Bending {
   void add_forces(const Eigen::Matrix3Xd& x, const TriangleNormals& normals, int threads,
                   Eigen::Matrix3Xd& force) const;
   void add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const;  // computes the normals
+
+  // The Gauss-Newton part of Eq 20's Hessian (3N x 3N): per hinge E_b''(theta) g g^T, g the gradient of
+  // the hinge's angle theta, E_b = (k_b L_n / 2) tan^2(theta/2); positive semi-definite, without
+  // E_b'(theta) times theta's own Hessian, so exact on a flat sheet. A hinge couples its two far corners
+  // c and d, which no bond joins. OnBonds adds E_b'' (g_c - g_d)(g_c - g_d)^T, which cancels that coupling:
+  // a matrix above the exact one, with the bonds' sparsity, so that a factor of it beside the springs
+  // fills no more than theirs (engine/newton_preconditioner.hpp).
+  enum class FarCorners { Coupled, OnBonds };
+  Eigen::SparseMatrix<double> gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners) const;
 
  private:
   template <class All>  // std::true_type: the span owns every target (owned_spans.hpp)
