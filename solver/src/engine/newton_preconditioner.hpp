@@ -3,9 +3,9 @@
 // tissue's contacts and the middle lamella, that is the springs (wall_stiffness.hpp), the bending's
 // Gauss-Newton part on the bonds' pattern (bending.hpp), the follower stiffness of each closed cell's
 // pressure, -P d2V/dx2, and each cell's volume spring k_c g_c g_c^T (g_c = dV_c/dx, k_c = -dP_c/dV_c;
-// cavity_fluid.hpp). The sparse part is factored by
-// CHOLMOD's supernodal Cholesky, its ordering found once; where the wall folds and the matrix is not
-// positive definite, a shift on its diagonal grows until it is. The volume springs join all of a cell's
+// cavity_fluid.hpp). The sparse part is factored by CHOLMOD's supernodal Cholesky, its ordering found
+// once a relaxation; where the wall folds and the matrix is not positive definite, a shift on its
+// diagonal grows until it is. The volume springs join all of a cell's
 // particles and would fill the factor: they enter by Sherman-Morrison, one rank a cell, exact because
 // the sparse part joins no two cells.
 #include <vector>
