@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include "engine/cavity_fluid.hpp"
 #include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/surface.hpp"
@@ -33,10 +34,7 @@ Eigen::Matrix3Xd rough_wall(const Tissue& tissue) {
 }
 
 Eigen::VectorXd pressure_forces(const Eigen::Matrix3Xd& x, const WallMesh& mesh, double P) {
-  const WallSurface surface = wall_surface(x, mesh);
-  Eigen::Matrix3Xd f(3, x.cols());
-  for (Eigen::Index k = 0; k < x.cols(); ++k) f.col(k) = P * volume_gradient(surface.vertex_normal.col(k));
-  return Eigen::Map<const Eigen::VectorXd>(f.data(), f.size());
+  return P * CavityFluid::volume_gradients(wall_surface(x, mesh));
 }
 
 }  // namespace
@@ -91,8 +89,7 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
   const Eigen::SparseMatrix<double> springs =
       wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e-2);
   const Eigen::SparseMatrix<double> A = springs + pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5});
-  Eigen::VectorXd g(n);
-  for (Eigen::Index k = 0; k < x.cols(); ++k) g.segment<3>(3 * k) = volume_gradient(sim.surface().vertex_normal.col(k));
+  const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
   const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 0.0};  // the second cell drained
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
 

@@ -5,9 +5,9 @@
 // pressure, -P d2V/dx2, and each cell's volume spring k_c g_c g_c^T (g_c = dV_c/dx, k_c = -dP_c/dV_c;
 // cavity_fluid.hpp). The sparse part is factored by CHOLMOD's supernodal Cholesky, its ordering found
 // once a relaxation; where the wall folds and the matrix is not positive definite, a shift on its
-// diagonal grows until it is. The volume springs join all of a cell's
-// particles and would fill the factor: they enter by Sherman-Morrison, one rank a cell, exact because
-// the sparse part joins no two cells.
+// diagonal grows until it is. The volume springs join all of a cell's particles and would fill the
+// factor: they enter by Sherman-Morrison, one rank a cell, exact because the sparse part joins no two
+// cells.
 #include <vector>
 
 #include <Eigen/CholmodSupport>
@@ -20,8 +20,9 @@ namespace cellsim {
 
 class NewtonPreconditioner {
  public:
-  // stiffness: the sparse part, of the same pattern at every call (its ordering is found at the first); volume_gradient: g stacked over the
-  // wall particles (each cell's on its own particles); volume_stiffness_Pa_m3: k_c per cell.
+  // stiffness: the sparse part, of the same pattern at every call (its ordering is found at the first);
+  // volume_gradient: g stacked over the wall particles (each cell's on its own particles);
+  // volume_stiffness_Pa_m3: k_c per cell.
   void factor(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& volume_gradient,
               const CellRanges& cells, const std::vector<double>& volume_stiffness_Pa_m3);
   // z = (the sparse part + the volume springs)^-1 r.

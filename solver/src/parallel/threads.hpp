@@ -53,6 +53,8 @@ class SerialOpenMP {
 #ifdef _OPENMP
   SerialOpenMP() : levels_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
   ~SerialOpenMP() { omp_set_max_active_levels(levels_); }
+#else
+  SerialOpenMP() {}  // nothing to hold without OpenMP (user-provided: no unused-variable warning)
 #endif
   SerialOpenMP(const SerialOpenMP&) = delete;
   SerialOpenMP& operator=(const SerialOpenMP&) = delete;

@@ -1,9 +1,9 @@
 #pragma once
 // The stiffness matrix of the wall's springs, -dF/dx: each bond's Eq 15 and Eq 21 springs, k n n^T along
 // the bond plus its tension's T / l (I - n n^T) across it (tension only), and Eq 22's k_pw along z on a
-// particle a plate touches. Bending, the fluid and a tissue's contacts are left out: it is what
-// quasi_static.hpp's Newton steps precondition with (the stiff part, exact for the springs without
-// plastic flow), not the Hessian itself; shift_N_m on the diagonal keeps the free motions (sliding
+// particle a plate touches. Bending, the fluid and a tissue's contacts are left out: it is the springs'
+// part of what the quasi-static Newton steps precondition with (engine/newton_preconditioner.hpp; exact
+// for the springs without plastic flow), not the Hessian itself; shift_N_m on the diagonal keeps the free motions (sliding
 // between frictionless plates, turning about z) from making it singular.
 #include <vector>
 
