@@ -13,6 +13,7 @@
 #include "engine/cavity_fluid.hpp"
 #include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
+#include "geometry/block_stiffness.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
 #include "physics/cavity_pressure.hpp"
@@ -46,7 +47,9 @@ TEST(PressureFollowerStiffness, IsMinusTheDerivativeOfThePressuresForceAtFixedPr
   const Tissue tissue = build_tissue(p);
   const Eigen::Matrix3Xd x = rough_wall(tissue);
   const double P = 3.0e5;
-  const Eigen::MatrixXd K = Eigen::MatrixXd(pressure_follower_stiffness(x, tissue.mesh, {P}));
+  BlockStiffness follower(x.cols(), tissue.mesh.bonds);
+  add_pressure_follower_stiffness(x, tissue.mesh, {P}, follower);
+  const Eigen::MatrixXd K = Eigen::MatrixXd(follower.matrix());
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
   const double h = 1e-10;
   for (Eigen::Index j : {0, 5, 100, 241, 480}) {
@@ -86,9 +89,10 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
   Simulation sim(p, tissue);
   const Eigen::Matrix3Xd& x = sim.state().wall.x;
   const Eigen::Index n = x.size();
-  const Eigen::SparseMatrix<double> springs =
-      wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e-2);
-  const Eigen::SparseMatrix<double> A = springs + pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5});
+  BlockStiffness stiffness(x.cols(), sim.mesh().bonds);
+  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e-2, stiffness);
+  add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
+  const Eigen::SparseMatrix<double>& A = stiffness.matrix();
   const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
   const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 0.0};  // the second cell drained
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
+#include "geometry/block_stiffness.hpp"
 #include "physics/plates.hpp"
 #include "physics/wall_stiffness.hpp"
 
@@ -95,16 +96,17 @@ double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.c
 
 // The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the bending's
 // Gauss-Newton part on the bonds, the cells' pressures' follower stiffness and their volume springs.
-void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, NewtonPreconditioner& preconditioner) {
+void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, BlockStiffness& stiffness,
+               NewtonPreconditioner& preconditioner) {
   forces_at(sim, x, history);  // the cells' pressures and the surface at x (the last evaluation may be a probe's)
   const State& s = sim.state();
-  const std::vector<double> pressure_Pa = sim.cell_mean_fluid_pressure_Pa();
-  Eigen::SparseMatrix<double> stiffness = wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(),
-                                                                sim.plate_law(), s.plates, kStiffnessShift_N_m);
-  stiffness += pressure_follower_stiffness(x, sim.mesh(), pressure_Pa);
-  stiffness += sim.bending().gauss_newton_stiffness(x, Bending::FarCorners::OnBonds);
+  stiffness.set_zero();
+  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(), sim.plate_law(), s.plates,
+                            kStiffnessShift_N_m, stiffness);
+  add_pressure_follower_stiffness(x, sim.mesh(), sim.cell_mean_fluid_pressure_Pa(), stiffness);
+  sim.bending().add_gauss_newton_stiffness(x, Bending::FarCorners::OnBonds, stiffness);
   const CavityFluid& cavity = sim.cavity_fluid();
-  preconditioner.factor(stiffness, CavityFluid::volume_gradients(sim.surface()), sim.cells(),
+  preconditioner.factor(stiffness.matrix(), CavityFluid::volume_gradients(sim.surface()), sim.cells(),
                         cavity.volume_stiffness_Pa_m3(sim.eos()));
 }
 
@@ -197,13 +199,14 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
+  BlockStiffness stiffness(s.wall.x.cols(), sim.mesh().bonds);
   NewtonPreconditioner preconditioner;
   bool refactor = true;
   double shift_N_m = 0;
   while (true) {
     eq.residual = largest_force_N(now.force) / pressure_load_N(sim);
     if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
-    if (refactor) factor_at(sim, now.x, history, preconditioner);
+    if (refactor) factor_at(sim, now.x, history, stiffness, preconditioner);
     NewtonDirection step =
         newton_direction(sim, now, history, shift_N_m, preconditioner, max_move_m, eq.iterations, max_iterations);
     refactor = step.negative_curvature || step.products > kRefactorAfterProducts;

@@ -28,10 +28,8 @@ double Bending::energy(const Eigen::Matrix3Xd& x) const {
   return e;
 }
 
-Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners) const {
+void Bending::add_gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners, BlockStiffness& K) const {
   const bool on_bonds = far_corners == FarCorners::OnBonds;
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(mesh_.hinges.size() * 16 * 9);
   for (std::size_t n = 0; n < mesh_.hinges.size(); ++n) {
     const Hinge& h = mesh_.hinges[n];
     const Eigen::Vector3d e = x.col(h.b) - x.col(h.a);
@@ -56,15 +54,9 @@ Eigen::SparseMatrix<double> Bending::gauss_newton_stiffness(const Eigen::Matrix3
         if (on_bonds && far_pair && i != j) continue;
         const double scale = on_bonds && far_pair ? 2 * curvature : curvature;
         const auto gi = static_cast<std::size_t>(i), gj = static_cast<std::size_t>(j);
-        const Eigen::Matrix3d block = scale * g[gi] * g[gj].transpose();
-        for (int row = 0; row < 3; ++row)
-          for (int col = 0; col < 3; ++col)
-            entries.emplace_back(3 * vertex[gi] + row, 3 * vertex[gj] + col, block(row, col));
+        K.add(vertex[gi], vertex[gj], scale * g[gi] * g[gj].transpose());
       }
   }
-  Eigen::SparseMatrix<double> K(3 * x.cols(), 3 * x.cols());
-  K.setFromTriplets(entries.begin(), entries.end());
-  return K;
 }
 
 void Bending::add_forces(const Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& force) const {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 
+#include "geometry/block_stiffness.hpp"
 #include "geometry/surface.hpp"  // the triangle normals, computed once a step
 #include "geometry/wall_mesh.hpp"
 #include "parallel/owned_spans.hpp"
@@ -30,7 +30,8 @@ class Bending {
   // a matrix above the exact one, with the bonds' sparsity, so that a factor of it beside the springs
   // fills no more than theirs (engine/newton_preconditioner.hpp).
   enum class FarCorners { Coupled, OnBonds };
-  Eigen::SparseMatrix<double> gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners) const;
+  // Adds it to K, whose pattern holds the bonds (and, for Coupled, every hinge's c-d pair).
+  void add_gauss_newton_stiffness(const Eigen::Matrix3Xd& x, FarCorners far_corners, BlockStiffness& K) const;
 
  private:
   template <class All>  // std::true_type: the span owns every target (owned_spans.hpp)
