@@ -8,10 +8,12 @@ namespace cellsim {
 
 BlockStiffness::BlockStiffness(Eigen::Index particles, const std::vector<std::array<int, 2>>& pairs)
     : matrix_(3 * particles, 3 * particles), rows_of_column_(static_cast<std::size_t>(particles)) {
-  for (Eigen::Index b = 0; b < particles; ++b) rows_of_column_[static_cast<std::size_t>(b)].push_back(static_cast<int>(b));
+  for (Eigen::Index b = 0; b < particles; ++b)
+    rows_of_column_[static_cast<std::size_t>(b)].push_back(static_cast<int>(b));
   for (const auto& [a, b] : pairs) {
     if (a == b || a < 0 || b < 0 || a >= particles || b >= particles)
-      throw std::logic_error("BlockStiffness: pair (" + std::to_string(a) + ", " + std::to_string(b) + ") is not a pair of its particles");
+      throw std::logic_error("BlockStiffness: pair (" + std::to_string(a) + ", " + std::to_string(b) +
+                             ") is not a pair of its particles");
     rows_of_column_[static_cast<std::size_t>(b)].push_back(a);
     rows_of_column_[static_cast<std::size_t>(a)].push_back(b);
   }
@@ -43,7 +45,8 @@ Eigen::Index BlockStiffness::slot(int a, int b) const {
   const std::vector<int>& rows = rows_of_column_[static_cast<std::size_t>(b)];
   const auto found = std::lower_bound(rows.begin(), rows.end(), a);
   if (found == rows.end() || *found != a)
-    throw std::logic_error("BlockStiffness: no block joins particles " + std::to_string(a) + " and " + std::to_string(b));
+    throw std::logic_error("BlockStiffness: no block joins particles " + std::to_string(a) + " and " +
+                           std::to_string(b));
   return matrix_.outerIndexPtr()[3 * b] + 3 * (found - rows.begin());
 }
 

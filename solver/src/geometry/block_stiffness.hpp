@@ -1,8 +1,8 @@
 #pragma once
 // A stiffness matrix of 3 x 3 blocks, one per particle on the diagonal and one per joined pair (both
 // ways), its pattern fixed when it is made: the quasi-static preconditioner (engine/newton_preconditioner.hpp)
-// assembles it at every factorization, so its laws add their blocks into slots found once instead of
-// sorting a list of entries each time, and the factorization's ordering holds for the whole run.
+// assembles it at every factorization of a relaxation, its laws adding their blocks into slots laid out
+// once instead of sorting a list of entries each time.
 #include <array>
 #include <vector>
 
