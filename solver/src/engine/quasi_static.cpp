@@ -255,7 +255,12 @@ void quasi_static_step(Simulation& sim) {
   sim.advance_loads(p.dt_s);
   move_touching_particles_with_plates(sim, plates_before);
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
-  const double jump_J = stored_energy_J(sim.energy_terms_now()) - stored_energy_J(stored_before);
+  const EnergyValues stored_at_start = sim.energy_terms_now();
+  const double jump_J = stored_energy_J(stored_at_start) - stored_energy_J(stored_before);
+  // The move may already have made the wall's history dissipate (a slider yielding): the history counts
+  // it (plastic_loss_J, lamella_loss_J), so the relaxation's loss must not count it again.
+  const double dissipated_in_move_J = stored_at_start[kPlasticLoss] + stored_at_start[kLamellaLoss] -
+                                      stored_before[kPlasticLoss] - stored_before[kLamellaLoss];
 
   CavityFluid& cavity = sim.cavity_fluid();
   cavity.begin_increment(s, sim.fluid_context(), p.dt_s);
@@ -269,7 +274,7 @@ void quasi_static_step(Simulation& sim) {
   }
   // The relaxation took the potential down from the start's jump; what the loads did not put in of that
   // jump it dissipated too (the account: stored energy now - before = loads' work - losses).
-  s.energy.integral[kRelaxationLoss] += eq.loss_J + loads_J - jump_J;
+  s.energy.integral[kRelaxationLoss] += eq.loss_J + loads_J - jump_J - dissipated_in_move_J;
   s.energy.integral[kMassTransfer] += cavity.end_increment(s, sim.fluid_context());
   s.relaxation_residual = eq.residual;
   s.relaxation_evaluations = static_cast<double>(eq.iterations);
