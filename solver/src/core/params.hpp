@@ -35,6 +35,11 @@ enum LateralBoundary : Choice { kLateralFree = 0, kLateralPeriodic = 1 };
 // drying does not depend on it: confined and unconfined compressions continue one dried state.
 enum LateralInCompression : Choice { kLateralConfined = 0, kLateralUnconfined = 1 };
 
+// compression.cell_rotation (engine/rotation_hold.hpp): a quasi-static lone cell's rigid rotation held at
+// zero (held) or left to the frictionless plates (free); auto resolves to held for a lone cell in the
+// quasi-static scheme and to free otherwise.
+enum CellRotation : Choice { kRotationAuto = 0, kRotationHeld = 1, kRotationFree = 2 };
+
 struct Params {
   // cell geometry and particles (model.md §1)
   double diameter_m = 0;                // D0 = 2R
@@ -50,6 +55,7 @@ struct Params {
   Choice packing = kCubicPacking;
   Choice lateral = kLateralFree;
   Choice compression_lateral = kLateralConfined;  // compression.lateral, for a periodic slab
+  Choice cell_rotation = kRotationAuto;           // compression.cell_rotation (quasi-static)
   double period_viscosity_Pa_s = 0;     // the period strains at -(lateral stress) / this while it follows
   double centre_distance_over_diameter = 0;  // centre distance of touching neighbours / D0
   double diameter_spread = 0;           // standard deviation of the cells' diameters / D0

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "engine/newton_preconditioner.hpp"
+#include "engine/rotation_hold.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/block_stiffness.hpp"
 #include "physics/plates.hpp"
@@ -84,8 +85,14 @@ const Eigen::Matrix3Xd& forces_at(Simulation& sim, const Eigen::Matrix3Xd& x, co
   return sim.wall_force();
 }
 
+// The forces that can move the wall: a held cell's (rotation_hold.hpp) less the hold's reaction.
+void drop_held_directions(const Simulation& sim, Eigen::Ref<Eigen::VectorXd> v) {
+  if (const RotationHold* hold = sim.rotation_hold()) hold->project(v);
+}
+
 WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
   WallPoint point{x, forces_at(sim, x, history)};
+  drop_held_directions(sim, Eigen::Map<Eigen::VectorXd>(point.force.data(), point.force.size()));
   const EnergyValues e = sim.energy_terms_now();
   point.potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
   point.dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
@@ -131,11 +138,16 @@ NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const Wal
   const Eigen::VectorXd f = flat(at.force);
   out.d = Eigen::VectorXd::Zero(f.size());
   Eigen::VectorXd Hd = Eigen::VectorXd::Zero(f.size());  // H d, unshifted, for the model's decrease
-  Eigen::VectorXd r = f, z = preconditioner.solve(r), p = z, Hp;
+  // A held cell's directions stay on its hold: the residual, the preconditioned residual and the
+  // products are all projected (rotation_hold.hpp), so every step keeps C(x) = 0.
+  Eigen::VectorXd r = f, z = preconditioner.solve(r), Hp;
+  drop_held_directions(sim, z);
+  Eigen::VectorXd p = z;
   double rz = r.dot(z);
   for (int cg = 0; cg < kMaxConjugateGradients && evaluations < max_evaluations; ++cg) {
     const double probe = kProbe_m / p.cwiseAbs().maxCoeff();
     Hp = -(flat(forces_at(sim, at.x + probe * as_positions(p), history)) - f) / probe;
+    drop_held_directions(sim, Hp);
     ++evaluations;
     ++out.products;
     const double pHp = p.dot(Hp);
@@ -153,6 +165,7 @@ NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const Wal
     r -= alpha * (Hp + shift_N_m * p);
     if (r.norm() <= kForcingTerm * f.norm()) break;
     z = preconditioner.solve(r);
+    drop_held_directions(sim, z);
     const double rz_next = r.dot(z);
     p = z + (rz_next / rz) * p;
     rz = rz_next;
@@ -254,6 +267,7 @@ void quasi_static_step(Simulation& sim) {
   const Plates plates_before = s.plates;
   sim.advance_loads(p.dt_s);
   move_touching_particles_with_plates(sim, plates_before);
+  if (const RotationHold* hold = sim.rotation_hold()) hold->project(s.wall.x);  // back onto C = 0: the least move
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
   const EnergyValues stored_at_start = sim.energy_terms_now();
   const double jump_J = stored_energy_J(stored_at_start) - stored_energy_J(stored_before);

@@ -21,6 +21,8 @@
 // a jump per step (cavity_fluid.hpp), and the relaxation's loss the rest: what the wall released in snaps
 // as it folded, and the trapezoid's error, which shrinks as dt^2.
 // The wall's history (plastic sliders, the lamella's damage) follows the accepted points only.
+// A lone cell's rigid rotation is held in compression (compression.cell_rotation, rotation_hold.hpp):
+// its forces, moves and products are projected onto the hold, and its equilibrium is the projected one.
 #include <cstdint>
 
 namespace cellsim {

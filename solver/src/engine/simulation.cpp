@@ -413,6 +413,7 @@ void Simulation::start_compression() {
   plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
   plates.start_time_s = s_.time_s;
   plates.contact_height_m = cell_height_m(s_.wall.x);
+  if (p_.time_scheme == kQuasiStatic && p_.cell_rotation == kRotationHeld) rotation_hold_.emplace(s_.wall.x);
   // A periodic slab's footprint is its period (model.md §10b): its cells overhang the period's edges.
   plates.footprint_m2 = s_.box.periodic() ? s_.box.area_m2() : convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");

@@ -6,6 +6,7 @@
 // keeps the wall, the contacts between cells, the plates and the order of the step.
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "core/params.hpp"
@@ -15,6 +16,7 @@
 #include "engine/fluid_model.hpp"
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
+#include "engine/rotation_hold.hpp"
 #include "engine/sph_fluid.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/heterogeneity.hpp"
@@ -102,6 +104,9 @@ class Simulation {
   const CellRanges& cells() const { return cells_; }
   const std::vector<LamellaBond>& lamella() const { return lamella_; }
   const WallSurface& surface() const { return surface_; }
+  // The hold on a quasi-static lone cell's rotation (rotation_hold.hpp), from the compression's start;
+  // null without one.
+  const RotationHold* rotation_hold() const { return rotation_hold_ ? &*rotation_hold_ : nullptr; }
 
  private:
   // The constructor's work, with the heterogeneous properties' factors drawn once (they set the bond law
@@ -140,6 +145,7 @@ class Simulation {
   double fluid_wall_cutoff_m_ = 0;  // of the wall-fluid pair list, at the current h (the fluid's choice)
   PlateLaw plate_law_;
   PlateMotion plate_motion_;
+  std::optional<RotationHold> rotation_hold_;
   BondLaw bond_law_;
 
   // Rates at the current positions.

@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "engine/density_update.hpp"
+#include "engine/rotation_hold.hpp"
 #include "engine/stage_caps.hpp"
 #include "engine/steady_state.hpp"
 #include "geometry/case_size.hpp"
@@ -285,6 +286,8 @@ const std::vector<std::string> kSphOnlyKeys = {
     "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
     "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"};
 const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance", "time.relaxation_max_iterations"};
+// The keys only the quasi-static scheme reads (quasi_static.hpp): a dynamic cell's inertia holds its rotation.
+const std::vector<std::string> kQuasiStaticOnlyKeys = {"compression.cell_rotation"};
 
 // Whether the case file gives `key` a value other than its default (a derived key: any value).
 bool given_away_from_default(const json& doc, const std::string& key) {
@@ -308,6 +311,7 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
   };
   if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
   if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);
+  if (p.time_scheme != kQuasiStatic) add(kQuasiStaticOnlyKeys);
   return ignored;
 }
 
@@ -345,6 +349,7 @@ Params validate_case(const json& doc) {
   check_case_size(p);
   resolve_steady_state_defaults(p);
   resolve_density_update(p);
+  resolve_cell_rotation(p);
   resolve_unloading(p);
   resolve_stage_caps(p);
   resolve_volume_closure(p);

@@ -235,6 +235,12 @@ std::vector<ParamSpec> build_specs() {
              "what a periodic slab's period does under the plates: held (confined, as a sample in a die) or "
              "following zero lateral stress (unconfined); a cell or a cluster takes only confined, the default",
              "model.md §10b"),
+      choice("compression.cell_rotation", &P::cell_rotation, {"auto", "held", "free"},
+             "a quasi-static lone cell's rigid rotation: held at zero (Eckart's condition on the wall's positions "
+             "when the compression starts, a constraint that does no work), or free, when a sequence of equilibria "
+             "rolls the cell between the frictionless plates to its softest orientation (a dynamic cell's inertia "
+             "holds it over a compression; a tissue's neighbours hold its cells); auto: held for a lone cell in the "
+             "quasi_static scheme, free otherwise", "docs/model-closures.md, engine/rotation_hold.hpp"),
       derived("compression.end_strain", "1", 1.0, &P::end_strain, 0, false, 1, false,
               "stop compression when the nominal strain reaches this value", "model.md §6",
               "none: run all compression.steps"),
