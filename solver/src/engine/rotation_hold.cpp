@@ -3,6 +3,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Geometry>  // cross products
+#include <Eigen/LU>        // the 3 x 3 inverse and determinant
+
 namespace cellsim {
 
 RotationHold::RotationHold(const Eigen::Matrix3Xd& reference) : arm_(reference.colwise() - reference.rowwise().mean()) {
