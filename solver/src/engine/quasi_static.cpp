@@ -92,7 +92,7 @@ void drop_held_directions(const Simulation& sim, Eigen::Ref<Eigen::VectorXd> v) 
 
 WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
   WallPoint point{x, forces_at(sim, x, history)};
-  drop_held_directions(sim, Eigen::Map<Eigen::VectorXd>(point.force.data(), point.force.size()));
+  if (const RotationHold* hold = sim.rotation_hold()) hold->project(point.force);
   const EnergyValues e = sim.energy_terms_now();
   point.potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
   point.dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];

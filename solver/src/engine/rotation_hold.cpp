@@ -17,7 +17,7 @@ RotationHold::RotationHold(const Eigen::Matrix3Xd& reference) : arm_(reference.c
   inverse_gram_ = gram.inverse();
 }
 
-Eigen::Vector3d RotationHold::value(const Eigen::Matrix3Xd& x) const {
+Eigen::Vector3d RotationHold::value(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const {
   if (x.cols() != arm_.cols())
     throw std::logic_error("RotationHold: " + std::to_string(x.cols()) + " particles against a reference of " +
                            std::to_string(arm_.cols()));
@@ -26,15 +26,9 @@ Eigen::Vector3d RotationHold::value(const Eigen::Matrix3Xd& x) const {
   return c;
 }
 
-void RotationHold::project(Eigen::Matrix3Xd& v) const {
+void RotationHold::project_columns(Eigen::Ref<Eigen::Matrix3Xd> v) const {
   const Eigen::Vector3d lambda = inverse_gram_ * value(v);
   for (Eigen::Index k = 0; k < arm_.cols(); ++k) v.col(k) -= lambda.cross(arm_.col(k));
-}
-
-void RotationHold::project(Eigen::Ref<Eigen::VectorXd> v) const {
-  Eigen::Matrix3Xd columns = Eigen::Map<const Eigen::Matrix3Xd>(v.data(), 3, v.size() / 3);
-  project(columns);
-  v = Eigen::Map<const Eigen::VectorXd>(columns.data(), columns.size());
 }
 
 }  // namespace cellsim

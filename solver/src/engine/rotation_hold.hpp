@@ -23,13 +23,17 @@ class RotationHold {
   explicit RotationHold(const Eigen::Matrix3Xd& reference);
 
   // C(x) = sum_k (X_k - Xbar) x x_k [m^2]: zero on the constraint.
-  Eigen::Vector3d value(const Eigen::Matrix3Xd& x) const;
-  // v - A^T (A A^T)^-1 A v: a force's part that can move the cell along the constraint (its rest is the
-  // reaction), or a move's part that keeps C. Linear and idempotent.
-  void project(Eigen::Matrix3Xd& v) const;
-  void project(Eigen::Ref<Eigen::VectorXd> v) const;  // v stacked as x_0, y_0, z_0, x_1, ...
+  Eigen::Vector3d value(const Eigen::Ref<const Eigen::Matrix3Xd>& x) const;
+  // v - A^T (A A^T)^-1 A v, in place: a force's part that can move the cell along the constraint (its rest
+  // is the reaction), or a move's part that keeps C. Linear and idempotent.
+  void project(Eigen::Matrix3Xd& v) const { project_columns(v); }
+  void project(Eigen::Ref<Eigen::VectorXd> v) const {  // v stacked as x_0, y_0, z_0, x_1, ...
+    project_columns(Eigen::Map<Eigen::Matrix3Xd>(v.data(), 3, v.size() / 3));
+  }
 
  private:
+  void project_columns(Eigen::Ref<Eigen::Matrix3Xd> v) const;
+
   Eigen::Matrix3Xd arm_;         // X_k - Xbar
   Eigen::Matrix3d inverse_gram_; // (A A^T)^-1, A A^T = sum_k (|X_k - Xbar|^2 I - (X_k - Xbar)(X_k - Xbar)^T)
 };
