@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include "core/errors.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/cell.hpp"
@@ -313,6 +315,57 @@ TEST(CellContact, ItsEnergiesAreThePotentialsOfItsForces) {
       EXPECT_NEAR(-(energy(plus) - energy(minus)) / (2 * h), force(a, k), 1e-6 * force.cwiseAbs().maxCoeff())
           << "particle " << k << ", axis " << a;
     }
+}
+
+// The quasi-static preconditioner's stiffness of the contacts and lamella is minus the derivative of their
+// forces (central differences, to 1e-6), less the contact's sideways part -k_c (g - r) / r (I - n n^T),
+// which it leaves out; a bond on its secant branch (damaged before) and a pair across the period included.
+// A pair that the pattern does not join is counted and left out.
+TEST(CellContact, ItsStiffnessIsMinusTheDerivativeOfItsForcesLessTheContactsSidewaysPart) {
+  const CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
+  Eigen::Matrix3Xd x(3, 4);
+  x << 0, 5e-6, 0, 99e-6,  // 3 sits across the 100 um period from 2
+      0, 1e-6, 20e-6, 20e-6,  //
+      0, 0, 0, 5e-6;
+  const PeriodicBox box{100e-6, 100e-6};
+  PairList wall_wall;
+  wall_wall.offset = {0, 1, 1, 1, 1};
+  wall_wall.index = {1};
+  // 2 and 3 are 5.10 um apart across the period; their bond, opened 0.4 um, was damaged to 0.5 um before.
+  const std::vector<LamellaBond> bonds = {{2, 3, std::hypot(1e-6, 5e-6) - 0.4e-6}};
+  const std::vector<char> intact = {1};
+  const std::vector<double> peak = {0.5e-6};
+  const auto forces = [&](const Eigen::Matrix3Xd& at) {
+    std::vector<char> intact_now = intact;
+    std::vector<double> peak_now = peak;
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, 4);
+    add_cell_contact_forces(at, wall_wall, bonds, law, box, intact_now, peak_now, f);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
+  };
+  BlockStiffness K(4, {{0, 1}, {2, 3}});
+  EXPECT_EQ(add_cell_contact_stiffness(x, wall_wall, bonds, law, box, intact, peak, K), 0);
+  Eigen::MatrixXd stiffness = Eigen::MatrixXd(K.matrix());
+  EXPECT_LT((stiffness - stiffness.transpose()).cwiseAbs().maxCoeff(), 1e-12 * stiffness.cwiseAbs().maxCoeff());
+  // The contact's sideways part, which the exact derivative has.
+  const Eigen::Vector3d d = x.col(0) - x.col(1);
+  const double r = d.norm();
+  const Eigen::Matrix3d sideways = -1e3 * (6e-6 - r) / r * (Eigen::Matrix3d::Identity() - d * d.transpose() / (r * r));
+  Eigen::MatrixXd exact = stiffness;
+  exact.block<3, 3>(0, 0) += sideways, exact.block<3, 3>(3, 3) += sideways;
+  exact.block<3, 3>(0, 3) -= sideways, exact.block<3, 3>(3, 0) -= sideways;
+  const double h = 1e-11;
+  for (int j = 0; j < 12; ++j) {
+    Eigen::Matrix3Xd plus = x, minus = x;
+    plus(j % 3, j / 3) += h, minus(j % 3, j / 3) -= h;
+    const Eigen::VectorXd fd = -(forces(plus) - forces(minus)) / (2 * h);
+    EXPECT_LT((exact.col(j) - fd).cwiseAbs().maxCoeff(), 1e-6 * exact.cwiseAbs().maxCoeff()) << "column " << j;
+  }
+  EXPECT_NEAR(d.dot(stiffness.block<3, 3>(0, 0) * d) / (r * r), 1e3, 1e-9);  // k_c along the line
+
+  BlockStiffness bonds_only(4, {{2, 3}});
+  EXPECT_EQ(add_cell_contact_stiffness(x, wall_wall, bonds, law, box, intact, peak, bonds_only), 1);
+  const Eigen::MatrixXd without_contact = Eigen::MatrixXd(bonds_only.matrix());
+  EXPECT_EQ(without_contact.topLeftCorner(6, 6).norm(), 0.0);
 }
 
 TEST(LamellaLaw, ABondThatSoftensPullsBothWallsEquallyAndSeparatesAtItsBreakOpening) {

@@ -50,6 +50,11 @@ Eigen::Index BlockStiffness::slot(int a, int b) const {
   return matrix_.outerIndexPtr()[3 * b] + 3 * (found - rows.begin());
 }
 
+bool BlockStiffness::joins(int a, int b) const {
+  const std::vector<int>& rows = rows_of_column_[static_cast<std::size_t>(b)];
+  return std::binary_search(rows.begin(), rows.end(), a);
+}
+
 void BlockStiffness::add(int a, int b, const Eigen::Matrix3d& block) {
   const Eigen::Index first = slot(a, b);
   const Eigen::Index column_length = 3 * static_cast<Eigen::Index>(rows_of_column_[static_cast<std::size_t>(b)].size());

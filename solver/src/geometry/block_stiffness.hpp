@@ -21,6 +21,9 @@ class BlockStiffness {
   // Adds `block` at rows of particle a and columns of particle b; throws std::logic_error where the pattern
   // has no such block (a law reaching beyond the pairs it was given).
   void add(int a, int b, const Eigen::Matrix3d& block);
+  // Whether the pattern has a block at particles a and b (a law whose pairs change within a relaxation,
+  // a tissue's contacts, adds only those it has).
+  bool joins(int a, int b) const;
   // The matrix (3 particles x 3 particles), every pattern entry stored, zero or not.
   const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 

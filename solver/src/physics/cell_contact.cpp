@@ -55,6 +55,16 @@ int contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall, co
   return broken;
 }
 
+// A pair's stiffness, along n (unit) and across, added at both particles and between them.
+void add_pair_block(int a, int b, const Eigen::Vector3d& n, double along_N_m, double across_N_m, BlockStiffness& K) {
+  const Eigen::Matrix3d nn = n * n.transpose();
+  const Eigen::Matrix3d block = along_N_m * nn + across_N_m * (Eigen::Matrix3d::Identity() - nn);
+  K.add(a, a, block);
+  K.add(b, b, block);
+  K.add(a, b, -block);
+  K.add(b, a, -block);
+}
+
 }  // namespace
 
 int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
@@ -69,6 +79,44 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
                                                          wall_force, virial);
   if (period_virial_J) *period_virial_J = virial;
   return broken;
+}
+
+int add_cell_contact_stiffness(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                               const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                               const PeriodicBox& box, const std::vector<char>& intact,
+                               const std::vector<double>& peak_opening_m, BlockStiffness& K) {
+  int left_out = 0;
+  for (int k = 0; k < wall_wall.rows(); ++k)
+    for (std::size_t q = static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k)]);
+         q < static_cast<std::size_t>(wall_wall.offset[static_cast<std::size_t>(k) + 1]); ++q) {
+      const int l = wall_wall.index[q];
+      const Eigen::Vector3d kl = box.nearest_image(wall_x.col(k) - wall_x.col(l));
+      const double r = kl.norm();
+      if (r >= law.gap_m || r == 0) continue;
+      if (!K.joins(k, l)) {
+        ++left_out;
+        continue;
+      }
+      add_pair_block(k, l, kl / r, law.contact_stiffness_N_m, 0.0, K);
+    }
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    if (!intact[b]) continue;
+    const LamellaBond& bond = bonds[b];
+    if (!K.joins(bond.a, bond.b)) {
+      ++left_out;
+      continue;
+    }
+    const Eigen::Vector3d ab = box.nearest_image(wall_x.col(bond.b) - wall_x.col(bond.a));
+    const double r = ab.norm();
+    const double opening = r - bond.length_m, peak = peak_opening_m[b];
+    const double tension = law.lamella.tension_N(opening, peak);
+    // Every branch of the law is linear through the origin at a fixed history (lamella_law.hpp): its
+    // slope is the tension over the opening, the elastic k where the bond is closed or undamaged.
+    const bool elastic = opening <= 0 || peak <= law.lamella.elastic_limit_m();
+    const double along = elastic ? law.lamella.stiffness_N_m : tension / opening;
+    add_pair_block(bond.a, bond.b, ab / r, along, std::max(tension, 0.0) / r, K);
+  }
+  return left_out;
 }
 
 CellContactEnergy cell_contact_energy(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "geometry/block_stiffness.hpp"
 #include "geometry/neighbours.hpp"
 #include "core/periodic_box.hpp"
 #include "geometry/tissue.hpp"
@@ -31,6 +32,18 @@ int add_cell_contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall
                             const std::vector<LamellaBond>& bonds, const CellContactLaw& law, const PeriodicBox& box,
                             std::vector<char>& intact, std::vector<double>& peak_opening_m,
                             Eigen::Matrix3Xd& wall_force, Eigen::Vector2d* period_virial_J = nullptr);
+
+// Their stiffness, -dF/dx, added into K where K's pattern joins the pair (the quasi-static
+// preconditioner, engine/newton_preconditioner.hpp; a contact that came into reach after the pattern was
+// laid out is left to the Newton steps' products). A contact closer than g: k_c n n^T along its line (the
+// part across it, -k_c (g - r) / r, is negative and left out, as a compressed bond's). An intact lamella
+// bond: its law's slope along the line at its history (the secant of a damaged bond, which is where
+// it returns to while the history holds) and its tension T / r across when pulled. Returns the number
+// of pairs in reach that K's pattern does not join.
+int add_cell_contact_stiffness(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall,
+                               const std::vector<LamellaBond>& bonds, const CellContactLaw& law,
+                               const PeriodicBox& box, const std::vector<char>& intact,
+                               const std::vector<double>& peak_opening_m, BlockStiffness& K);
 
 // The energies of these forces (the energy account): the contacts' k_c (g - r)^2 / 2 over the pairs
 // closer than g, the intact bonds' stored energy and every bond's dissipated energy (lamella_law.hpp).
