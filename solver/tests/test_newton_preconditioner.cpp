@@ -5,6 +5,7 @@
 // part plus each cell's rank-one volume spring, shifted where the sparse part is not positive definite.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -114,5 +115,50 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
     }
     const Eigen::VectorXd expected = dense.ldlt().solve(r);
     EXPECT_LT((preconditioner.solve(r) - expected).norm(), 1e-9 * expected.norm()) << "lowered by " << lowered_N_m;
+  }
+}
+
+// Cells joined by a tissue's contacts (a block between a particle of each): solve(r) = (A + sum_c k_c g_c
+// g_c^T)^-1 r to 1e-9 through the rank-C update, where the per-cell update no longer holds; and on cells
+// that nothing joins, the rank-C update gives the per-cell one's answer.
+TEST(NewtonPreconditioner, SolvesWithEveryCellsVolumeSpringWhereContactsJoinTheCells) {
+  const Params p = small_cell_case({{"fluid", {{"model", "cavity"}}}, {"tissue", {{"cells_x", 2}}}});
+  const Tissue tissue = build_tissue(p);
+  Simulation sim(p, tissue);
+  const Eigen::Matrix3Xd& x = sim.state().wall.x;
+  const Eigen::Index n = x.size();
+  const int a = sim.cells().wall[0], b = sim.cells().wall[1] + 7;  // one particle of each cell
+  std::vector<std::array<int, 2>> pairs = sim.mesh().bonds;
+  pairs.push_back({a, b});
+  const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
+  const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 3 * 20e6 / sim.surface().cell_volume_m3[1]};
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+  for (double joining_N_m : {0.0, 1e3}) {
+    BlockStiffness stiffness(x.cols(), pairs);
+    add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e2, stiffness);
+    add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
+    const Eigen::Vector3d line = (x.col(b) - x.col(a)).normalized();
+    const Eigen::Matrix3d block = joining_N_m * line * line.transpose();
+    stiffness.add(a, a, block), stiffness.add(b, b, block), stiffness.add(a, b, -block), stiffness.add(b, a, -block);
+    NewtonPreconditioner joined;
+    joined.factor(stiffness.matrix(), g, sim.cells(), k_c, true);
+    Eigen::MatrixXd dense = Eigen::MatrixXd(stiffness.matrix()) + joined.shift_N_m() * Eigen::MatrixXd::Identity(n, n);
+    for (int c = 0; c < 2; ++c) {
+      Eigen::VectorXd gc = Eigen::VectorXd::Zero(n);
+      const Eigen::Index first = 3 * sim.cells().wall[c], size = 3 * sim.cells().wall_count(c);
+      gc.segment(first, size) = g.segment(first, size);
+      dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
+    }
+    const Eigen::VectorXd expected = dense.ldlt().solve(r);
+    EXPECT_LT((joined.solve(r) - expected).norm(), 1e-9 * expected.norm()) << "joined by " << joining_N_m << " N/m";
+    if (joining_N_m == 0) {
+      NewtonPreconditioner per_cell;
+      per_cell.factor(stiffness.matrix(), g, sim.cells(), k_c, false);
+      EXPECT_LT((per_cell.solve(r) - joined.solve(r)).norm(), 1e-9 * expected.norm());
+    } else {
+      NewtonPreconditioner per_cell;  // the per-cell update is not the inverse once the cells are joined
+      per_cell.factor(stiffness.matrix(), g, sim.cells(), k_c, false);
+      EXPECT_GT((per_cell.solve(r) - expected).norm(), 1e-6 * expected.norm());
+    }
   }
 }
