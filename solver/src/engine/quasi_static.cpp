@@ -2,6 +2,7 @@
 #include "engine/quasi_static.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "engine/rotation_hold.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/block_stiffness.hpp"
+#include "physics/cell_contact.hpp"
 #include "physics/plates.hpp"
 #include "physics/wall_stiffness.hpp"
 
@@ -101,20 +103,58 @@ WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory
 
 double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
+// Whether a tissue's contacts and lamella join its cells (a lone cell has neither).
+bool cells_joined(const Simulation& sim) { return sim.cells().count() > 1; }
+
+// The pattern of the relaxation's stiffness: the wall's bonds, and in a tissue the lamella bonds and the
+// wall pairs of different cells the neighbour list holds at its start (the contacts it may make; the
+// list's skin covers a relaxation's moves unless it is rebuilt within it).
+BlockStiffness stiffness_pattern(const Simulation& sim) {
+  if (!cells_joined(sim)) return BlockStiffness(sim.state().wall.x.cols(), sim.mesh().bonds);
+  std::vector<std::array<int, 2>> pairs = sim.mesh().bonds;
+  for (const LamellaBond& bond : sim.lamella()) pairs.push_back({bond.a, bond.b});
+  const PairList& wall_wall = sim.neighbours().wall_wall();
+  for (int k = 0; k < wall_wall.rows(); ++k)
+    for (int q = wall_wall.offset[static_cast<std::size_t>(k)]; q < wall_wall.offset[static_cast<std::size_t>(k) + 1]; ++q)
+      pairs.push_back({k, wall_wall.index[static_cast<std::size_t>(q)]});
+  return BlockStiffness(sim.state().wall.x.cols(), pairs);
+}
+
+// The relaxation's stiffness and its preconditioner, with the neighbour list build its pattern was laid
+// out from.
+struct RelaxationStiffness {
+  explicit RelaxationStiffness(const Simulation& sim)
+      : stiffness(stiffness_pattern(sim)), list_build(sim.neighbours().builds()) {}
+  BlockStiffness stiffness;
+  long list_build;
+  NewtonPreconditioner preconditioner;
+};
+
 // The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the bending's
-// Gauss-Newton part on the bonds, the cells' pressures' follower stiffness and their volume springs.
-void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, BlockStiffness& stiffness,
-               NewtonPreconditioner& preconditioner) {
+// Gauss-Newton part on the bonds, the cells' pressures' follower stiffness and their volume springs, and
+// a tissue's contacts and lamella. Where the neighbour list was rebuilt since the pattern was laid out, a
+// tissue's pattern is laid out again from it (the contacts it may make moved on), its ordering found anew.
+void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, RelaxationStiffness& at) {
   forces_at(sim, x, history);  // the cells' pressures and the surface at x (the last evaluation may be a probe's)
+  if (cells_joined(sim) && sim.neighbours().builds() != at.list_build) {
+    at.stiffness = stiffness_pattern(sim);
+    at.list_build = sim.neighbours().builds();
+    at.preconditioner.forget_ordering();
+  }
+  BlockStiffness& stiffness = at.stiffness;
+  NewtonPreconditioner& preconditioner = at.preconditioner;
   const State& s = sim.state();
   stiffness.set_zero();
   add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(), sim.plate_law(), s.plates,
                             kStiffnessShift_N_m, stiffness);
   add_pressure_follower_stiffness(x, sim.mesh(), sim.cell_mean_fluid_pressure_Pa(), stiffness);
   sim.bending().add_gauss_newton_stiffness(x, Bending::FarCorners::OnBonds, stiffness);
+  if (cells_joined(sim))
+    add_cell_contact_stiffness(x, sim.neighbours().wall_wall(), sim.lamella(), sim.contact_law(), s.box,
+                               s.lamella_intact, s.lamella_peak_opening_m, stiffness);
   const CavityFluid& cavity = sim.cavity_fluid();
   preconditioner.factor(stiffness.matrix(), CavityFluid::volume_gradients(sim.surface()), sim.cells(),
-                        cavity.volume_stiffness_Pa_m3(sim.eos()));
+                        cavity.volume_stiffness_Pa_m3(sim.eos()), cells_joined(sim));
 }
 
 // A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e
@@ -212,14 +252,14 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
-  BlockStiffness stiffness(s.wall.x.cols(), sim.mesh().bonds);
-  NewtonPreconditioner preconditioner;
+  RelaxationStiffness stiffness(sim);
+  const NewtonPreconditioner& preconditioner = stiffness.preconditioner;
   bool refactor = true;
   double shift_N_m = 0;
   while (true) {
     eq.residual = largest_force_N(now.force) / pressure_load_N(sim);
     if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
-    if (refactor) factor_at(sim, now.x, history, stiffness, preconditioner);
+    if (refactor) factor_at(sim, now.x, history, stiffness);
     NewtonDirection step =
         newton_direction(sim, now, history, shift_N_m, preconditioner, max_move_m, eq.iterations, max_iterations);
     refactor = step.negative_curvature || step.products > kRefactorAfterProducts;

@@ -6,8 +6,9 @@
 //
 // The relaxation minimises the potential (the wall's stored energy, plates and contacts included, less
 // the fluid pressure's work along the volume's path in the increment) by Newton's method: conjugate
-// gradients on differences of forces, preconditioned with the wall's stiffness and its cells' pressures
-// (newton_preconditioner.hpp), factored afresh where the last step's gradients struggled (a fold);
+// gradients on differences of forces, preconditioned with the wall's stiffness, its cells' pressures and a
+// tissue's contacts and lamella (newton_preconditioner.hpp), factored afresh where the last step's
+// gradients struggled (a fold);
 // a shift (Levenberg-Marquardt) where the model fails; a step along a direction of negative curvature
 // where a fold forms (Steihaug); a backtracking line search on the potential. Equilibrium: the largest
 // force on a wall particle below time.equilibrium_tolerance x its pressure load, max(P_T0, |P|) x the

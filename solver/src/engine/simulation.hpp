@@ -103,6 +103,7 @@ class Simulation {
   std::vector<double> cell_mean_fluid_pressure_Pa() const { return fluid_->cell_mean_pressure_Pa(cells_); }
   const CellRanges& cells() const { return cells_; }
   const std::vector<LamellaBond>& lamella() const { return lamella_; }
+  const CellContactLaw& contact_law() const { return contact_law_; }
   const WallSurface& surface() const { return surface_; }
   // The hold on a quasi-static lone cell's rotation (rotation_hold.hpp), from the compression's start;
   // null without one.
