@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/errors.hpp"
 #include "core/periodic_box.hpp"
+#include "engine/quasi_static.hpp"
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/tissue.hpp"
+#include "io/case_file.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;
@@ -311,6 +315,68 @@ TEST(PeriodicTissue, ThePeriodShrinksWithTheDryingCellsAndEndsFreeOfLateralStres
   EXPECT_EQ(std::count(sim.state().lamella_intact.begin(), sim.state().lamella_intact.end(), 1),
             static_cast<long>(t.lamella.size()));
   EXPECT_NO_THROW(sim.check_containment());
+}
+
+// Quasi-static, with closed cells (engine/quasi_static.hpp): the period is part of every equilibrium. The
+// small cell's 2 x 2 slab dried to X/X0 = 0.5 ends each step with its lateral stress within the
+// tolerance of the load, its period shrunk with the cells, its bonds whole and the energy account closed;
+// compressed unconfined, the period follows and stays free of lateral stress, confined it holds.
+TEST(PeriodicTissue, QuasiStaticThePeriodIsAtEquilibriumAtEveryStep) {
+  Params p = slab_case(2, 2, 1, {{"fluid", {{"model", "cavity"}}}, {"time", {{"scheme", "quasi_static"}, {"dt_ns", 500}}},
+                                 {"drying", {{"dryness", 0.5}}}, {"tissue", {{"wall_gap_um", 3}}}});
+  const Tissue t = build_tissue(p);
+  Simulation sim(p, t);
+  settle(sim, p.settle_max_iterations, p.settle_tolerance);
+  const double period0 = sim.state().box.length_x_m, volume0 = sim.surface().volume_m3;
+  // The lateral stress over the load scale, max(P_T0, the largest |P| of a cell).
+  const auto stress_over_load = [](const Simulation& at) {
+    double load_Pa = at.params().turgor_Pa;
+    for (double P : at.cell_mean_fluid_pressure_Pa()) load_Pa = std::max(load_Pa, std::abs(P));
+    return std::max(std::abs(at.state().lateral_stress_x_Pa), std::abs(at.state().lateral_stress_y_Pa)) / load_Pa;
+  };
+  double most = 0;
+  for (int n = 0; n < 60; ++n) {  // the 20 us ramp and 10 us beyond
+    quasi_static_step(sim);
+    most = std::max(most, stress_over_load(sim));
+  }
+  EXPECT_LE(most, p.equilibrium_tolerance);
+  const double shrink = sim.state().box.length_x_m / period0;
+  const double cells_shrink = std::cbrt(sim.surface().volume_m3 / volume0);
+  EXPECT_LT(cells_shrink, 0.95);  // the cells have dried
+  EXPECT_NEAR(shrink, cells_shrink, 0.05);
+  EXPECT_NEAR(sim.state().box.length_y_m / period0, shrink, 0.01);  // alike along y
+  EXPECT_EQ(std::count(sim.state().lamella_intact.begin(), sim.state().lamella_intact.end(), 1),
+            static_cast<long>(t.lamella.size()));
+  const Record dried = sim.record();
+  EXPECT_LT(std::abs(dried.energy_residual_J), 1e-3 * std::abs(dried.energy[kDrive]));
+
+  for (const char* lateral : {"unconfined", "confined"}) {
+    Params q = p;
+    q.compression_lateral = std::string(lateral) == "unconfined" ? kLateralUnconfined : kLateralConfined;
+    Simulation squeezed(q, t);
+    squeezed.restore(sim.state());
+    squeezed.start_compression();
+    const PeriodicBox before = squeezed.state().box;
+    double most_squeezed = 0;
+    while (squeezed.nominal_strain() < 0.05) {
+      quasi_static_step(squeezed);
+      most_squeezed = std::max(most_squeezed, stress_over_load(squeezed));
+    }
+    if (q.compression_lateral == kLateralUnconfined) {
+      EXPECT_LE(most_squeezed, q.equilibrium_tolerance);
+      EXPECT_GT(squeezed.state().box.length_x_m, before.length_x_m);  // squeezed, the slab spreads
+    } else {
+      EXPECT_EQ(squeezed.state().box.length_x_m, before.length_x_m);
+      EXPECT_GT(stress_over_load(squeezed), 10 * q.equilibrium_tolerance);  // the die pushes back
+      EXPECT_LT(squeezed.state().lateral_stress_x_Pa, 0.0);
+    }
+    const Record r = squeezed.record();
+    EXPECT_LT(std::abs(r.energy_residual_J), 1e-6 * r.energy[kPlateWork]) << lateral;
+  }
+  // The period's viscosity is the dynamic scheme's: a quasi-static case that gives it is told so.
+  const nlohmann::json doc = {{"fluid", {{"model", "cavity"}}}, {"time", {{"scheme", "quasi_static"}}},
+                              {"tissue", {{"cells_x", 2}, {"lateral", "periodic"}, {"period_viscosity_Pa_s", 20}}}};
+  EXPECT_EQ(keys_the_case_ignores(doc, validate_case(doc)), std::vector<std::string>{"tissue.period_viscosity_Pa_s"});
 }
 
 // Close packing in a period (hexagonal layers stacked A, B, C, with a seeded spread of diameters): a

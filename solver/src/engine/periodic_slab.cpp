@@ -21,6 +21,10 @@ double follow_lateral_stress(State& s, const CellRanges& cells, double period_vi
         << " kPa); raise tissue.period_viscosity_Pa_s (now " << period_viscosity_Pa_s << ")";
     throw NumericalFailure(msg.str());
   }
+  return strain_period(s, cells, strain);
+}
+
+double strain_period(State& s, const CellRanges& cells, const Eigen::Vector2d& strain) {
   double moved_m = 0;
   for (int c = 0; c < cells.count(); ++c) {
     const Eigen::Vector2d centroid = s.wall.x.middleCols(cells.wall[c], cells.wall_count(c)).topRows<2>().rowwise().mean();

@@ -16,6 +16,11 @@ Eigen::Vector2d lateral_stress_Pa(const Eigen::Vector2d& period_virial_J, const 
 // The most a period may strain in one step: far below a cell's own strain per step, so the cells keep up.
 constexpr double kLargestPeriodStrainPerStep = 1e-3;
 
+// Strains the period by `strain` (x, y), every cell's particles moving as its centroid maps (shapes and
+// velocities kept). Returns how far a pair of particles can have moved apart as the lists see it (the
+// cells' moves and, for a pair across the period, the period's change).
+double strain_period(State& s, const CellRanges& cells, const Eigen::Vector2d& strain);
+
 // One step of the period following zero lateral stress: it strains by -sigma dt / eta_p along x and y,
 // and every cell's particles move as its centroid maps (shapes and velocities kept). Throws
 // NumericalFailure if the period would strain more than kLargestPeriodStrainPerStep.

@@ -37,11 +37,16 @@ constexpr int kMaxConjugateGradients = 200;
 constexpr int kRefactorAfterProducts = 20;
 constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
 
-// What a wall particle carries: max(P_T0, the largest |P| of a cell) x the mean area a wall particle owns.
-double pressure_load_N(const Simulation& sim) {
+// The load scale: max(P_T0, the largest |P| of a cell).
+double load_pressure_Pa(const Simulation& sim) {
   double pressure = std::max(sim.params().turgor_Pa, kLeastPressureLoad_Pa);
   for (double P : sim.cell_mean_fluid_pressure_Pa()) pressure = std::max(pressure, std::abs(P));
-  return pressure * sim.surface().area_m2 / static_cast<double>(sim.state().wall.size());
+  return pressure;
+}
+
+// What a wall particle carries: the load scale x the mean area a wall particle owns.
+double pressure_load_N(const Simulation& sim) {
+  return load_pressure_Pa(sim) * sim.surface().area_m2 / static_cast<double>(sim.state().wall.size());
 }
 
 using Flat = Eigen::Map<const Eigen::VectorXd>;
@@ -92,12 +97,17 @@ void drop_held_directions(const Simulation& sim, Eigen::Ref<Eigen::VectorXd> v) 
   if (const RotationHold* hold = sim.rotation_hold()) hold->project(v);
 }
 
+// The potential and what the history dissipated, at the state's positions and rates now.
+void potential_now(Simulation& sim, double& potential_J, double& dissipated_J) {
+  const EnergyValues e = sim.energy_terms_now();
+  potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
+  dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
+}
+
 WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
   WallPoint point{x, forces_at(sim, x, history)};
   if (const RotationHold* hold = sim.rotation_hold()) hold->project(point.force);
-  const EnergyValues e = sim.energy_terms_now();
-  point.potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
-  point.dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
+  potential_now(sim, point.potential_J, point.dissipated_J);
   return point;
 }
 
@@ -295,6 +305,58 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
   return eq;
 }
 
+namespace {
+
+// A periodic slab's period in the quasi-static steps: its first strain is the lateral stress over
+// kFirstLateralModulus x the load scale, later ones a secant per axis; no more than kLargestPeriodMove a
+// move, kMaxPeriodMoves moves a step.
+constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
+constexpr int kMaxPeriodMoves = 40;
+
+// The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period
+// too: staggered, the wall relaxed at a fixed period, then the period strained (the cells moving with it
+// whole) by a secant step on its lateral stress, until that stress is within the tolerance of the load
+// scale at an equilibrium of the wall. The lateral stress of the pairs across the period is exact there
+// (periodic_slab.hpp). The period does no work on anything outside: what its moves change of the potential
+// is the relaxation's (its loss counts the fall over every relaxation and move).
+Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_t max_iterations) {
+  Equilibrium eq = relax_wall(sim, tolerance, max_iterations);
+  if (!eq.converged || !sim.period_follows()) return eq;
+  const State& s = sim.state();
+  const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
+  Eigen::Vector2d stress = lateral_stress();
+  Eigen::Vector2d modulus = Eigen::Vector2d::Constant(kFirstLateralModulus * load_pressure_Pa(sim));
+  for (int move = 0;; ++move) {
+    if (stress.cwiseAbs().maxCoeff() <= tolerance * load_pressure_Pa(sim)) return eq;
+    if (move == kMaxPeriodMoves) {
+      eq.converged = false;
+      eq.period_unbalanced = true;
+      return eq;
+    }
+    // Tension (positive) draws the period in: it grows as the period does.
+    const Eigen::Vector2d by = (-stress.array() / modulus.array()).cwiseMax(-kLargestPeriodMove).cwiseMin(kLargestPeriodMove);
+    double before_J = 0, dissipated_before_J = 0, after_J = 0, dissipated_after_J = 0;
+    potential_now(sim, before_J, dissipated_before_J);
+    sim.strain_period(by);
+    sim.refresh_rates();
+    potential_now(sim, after_J, dissipated_after_J);
+    const Equilibrium next = relax_wall(sim, tolerance, max_iterations - eq.iterations);
+    eq.iterations += next.iterations;
+    eq.residual = next.residual;
+    eq.converged = next.converged;
+    eq.loss_J += next.loss_J - ((after_J + dissipated_after_J) - (before_J + dissipated_before_J));
+    if (!eq.converged) return eq;
+    const Eigen::Vector2d stress_now = lateral_stress();
+    for (int axis = 0; axis < 2; ++axis) {
+      const double secant = (stress_now[axis] - stress[axis]) / by[axis];
+      if (by[axis] != 0 && std::isfinite(secant) && secant > 0) modulus[axis] = secant;
+    }
+    stress = stress_now;
+  }
+}
+
+}  // namespace
+
 void quasi_static_step(Simulation& sim) {
   const Params& p = sim.params();
   State& s = sim.mutable_state();
@@ -318,7 +380,7 @@ void quasi_static_step(Simulation& sim) {
 
   CavityFluid& cavity = sim.cavity_fluid();
   cavity.begin_increment(s, sim.fluid_context(), p.dt_s);
-  const Equilibrium eq = relax_wall(sim, p.equilibrium_tolerance, p.relaxation_max_iterations);
+  const Equilibrium eq = relax_wall_and_period(sim, p.equilibrium_tolerance, p.relaxation_max_iterations);
   const EnergyValues& power_at_end_W = sim.power_W();
   double loads_J = 0;
   for (EnergyTermId load : {kPlateWork, kDrive}) {
@@ -332,6 +394,15 @@ void quasi_static_step(Simulation& sim) {
   s.energy.integral[kMassTransfer] += cavity.end_increment(s, sim.fluid_context());
   s.relaxation_residual = eq.residual;
   s.relaxation_evaluations = static_cast<double>(eq.iterations);
+  if (eq.period_unbalanced) {
+    std::ostringstream msg;
+    msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "
+        << (s.stage == Stage::Drying ? "drying" : "compression") << "): the periodic slab's period did not reach "
+        << "zero lateral stress within " << kMaxPeriodMoves << " moves (lateral stress " << s.lateral_stress_x_Pa / 1e3
+        << " / " << s.lateral_stress_y_Pa / 1e3 << " kPa, time.equilibrium_tolerance = " << p.equilibrium_tolerance
+        << " of the load); give a smaller time.dt_ns";
+    throw NumericalFailure(msg.str());
+  }
   if (!eq.converged) {
     std::ostringstream msg;
     msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "

@@ -35,13 +35,15 @@ struct Equilibrium {
   double residual = 0;   // largest force on a wall particle / its pressure load, at the end
   bool converged = false;
   double loss_J = 0;     // energy the relaxation took out
+  bool period_unbalanced = false;  // a periodic slab's period did not reach zero lateral stress
 };
 
 // Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations.
 Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations);
 
 // One quasi-static step. Throws NumericalFailure (naming the step) if the wall does not reach
-// equilibrium within time.relaxation_max_iterations.
+// equilibrium within time.relaxation_max_iterations, or a periodic slab's following period zero lateral
+// stress within its moves.
 void quasi_static_step(Simulation& sim);
 
 }  // namespace cellsim

@@ -184,9 +184,14 @@ void Simulation::finish_step() {
   timer_.lap(Phase::Integration);
 }
 
-void Simulation::advance_loads(double dt) {
-  advance_clock(dt);
-  follow_lateral_stress(dt);
+void Simulation::advance_loads(double dt) { advance_clock(dt); }
+
+bool Simulation::period_follows() const {
+  return s_.box.periodic() && (s_.stage != Stage::Compression || p_.compression_lateral == kLateralUnconfined);
+}
+
+void Simulation::strain_period(const Eigen::Vector2d& strain) {
+  moved_since_lists_m_ += cellsim::strain_period(s_, cells_, strain);
 }
 
 // Forces and rates at the current positions, in the order of the model.
@@ -274,7 +279,7 @@ void Simulation::cell_contact_terms() {
 // A periodic slab's period follows zero lateral stress in drying, and in compression if unconfined
 // (periodic_slab.hpp); the lists learn how far the move can have taken a pair (and read the period at their next build).
 void Simulation::follow_lateral_stress(double dt) {
-  if (!s_.box.periodic() || (s_.stage == Stage::Compression && p_.compression_lateral != kLateralUnconfined)) return;
+  if (!period_follows()) return;
   try {
     moved_since_lists_m_ += cellsim::follow_lateral_stress(s_, cells_, p_.period_viscosity_Pa_s, dt);
   } catch (const NumericalFailure& e) {

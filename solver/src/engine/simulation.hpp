@@ -38,9 +38,14 @@ class Simulation {
 
   void step();                  // one kick-drift-kick step of dt
   // A quasi-static step (quasi_static.hpp) moves the loads at fixed particles: the clock by dt, and with
-  // it the plates, the drying ramp and a periodic slab's period; relaxes; then ends as every step does
-  // (the unloading plate's turn, the step counts, the state's checks).
+  // it the plates and the drying ramp; relaxes (a periodic slab's period with the wall, where it
+  // follows); then ends as every step does (the unloading plate's turn, the step counts, the state's checks).
   void advance_loads(double dt);
+  // Whether a periodic slab's period follows zero lateral stress now: in drying, and in compression if
+  // unconfined (model.md §10b).
+  bool period_follows() const;
+  // Strains a periodic slab's period, the cells moving with it whole (periodic_slab.hpp).
+  void strain_period(const Eigen::Vector2d& strain);
   void finish_step();
   void start_compression();     // switches L_p and places the plates (model.md §6)
   void restore(const State& saved);  // continue from a saved state (same case geometry)

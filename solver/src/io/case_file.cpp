@@ -288,6 +288,9 @@ const std::vector<std::string> kSphOnlyKeys = {
 const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance", "time.relaxation_max_iterations"};
 // The keys only the quasi-static scheme reads (quasi_static.hpp): a dynamic cell's inertia holds its rotation.
 const std::vector<std::string> kQuasiStaticOnlyKeys = {"compression.cell_rotation"};
+// The keys only the dynamic scheme reads: quasi-static, a periodic slab's period is part of each
+// equilibrium (quasi_static.hpp), not a viscous follower.
+const std::vector<std::string> kDynamicOnlyKeys = {"tissue.period_viscosity_Pa_s"};
 
 // Whether the case file gives `key` a value other than its default (a derived key: any value).
 bool given_away_from_default(const json& doc, const std::string& key) {
@@ -312,6 +315,7 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
   if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
   if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);
   if (p.time_scheme != kQuasiStatic) add(kQuasiStaticOnlyKeys);
+  if (p.time_scheme == kQuasiStatic) add(kDynamicOnlyKeys);
   return ignored;
 }
 

@@ -79,7 +79,8 @@ std::vector<ParamSpec> build_specs() {
       real("tissue.period_viscosity_Pa_s", "Pa s", 1.0, &P::period_viscosity_Pa_s, 5, 0, false, 1e6, true,
            "a periodic slab's period strains at -(its lateral stress) / this while it follows zero lateral stress "
            "(5 Pa s: 100 kPa strains it 0.02 per us; the explicit step is stable while this exceeds half the "
-           "cells' lateral stiffness times dt, ~0.85 Pa s for a fresh slab at dt 1 ns and more as it dries)",
+           "cells' lateral stiffness times dt, ~0.85 Pa s for a fresh slab at dt 1 ns and more as it dries); the "
+           "quasi-static scheme does not read it: its period is at zero lateral stress at every step",
            "model.md §10b"),
       real("tissue.centre_distance_over_diameter", "1", 1.0, &P::centre_distance_over_diameter, 0.85, 0.6, true, 2,
            true, "distance between neighbouring cells' centres / D0; below 1 the cells press flat faces on each "
