@@ -39,6 +39,21 @@ Eigen::VectorXd pressure_forces(const Eigen::Matrix3Xd& x, const WallMesh& mesh,
   return P * CavityFluid::volume_gradients(wall_surface(x, mesh));
 }
 
+// The preconditioner's matrix, dense: the factored sparse part, its shift, and each cell's volume spring
+// k_c g_c g_c^T (g_c: g on the cell's rows).
+Eigen::MatrixXd dense_with_volume_springs(const Eigen::SparseMatrix<double>& factored, double shift_N_m,
+                                          const Eigen::VectorXd& g, const CellRanges& cells, const std::vector<double>& k_c) {
+  const Eigen::Index n = factored.rows();
+  Eigen::MatrixXd dense = Eigen::MatrixXd(factored) + shift_N_m * Eigen::MatrixXd::Identity(n, n);
+  for (int c = 0; c < cells.count(); ++c) {
+    Eigen::VectorXd gc = Eigen::VectorXd::Zero(n);
+    const Eigen::Index first = 3 * cells.wall[c], size = 3 * cells.wall_count(c);
+    gc.segment(first, size) = g.segment(first, size);
+    dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
+  }
+  return dense;
+}
+
 }  // namespace
 
 // K e_j = -(F(x + h e_j) - F(x - h e_j)) / 2h for F = P dV/dx at fixed P (central differences, to 1e-6
@@ -106,14 +121,8 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
     preconditioner.factor(factored, g, sim.cells(), k_c);
     if (lowered_N_m < 0) EXPECT_EQ(preconditioner.shift_N_m(), 0.0);
     else EXPECT_GT(preconditioner.shift_N_m(), 0.0);
-    Eigen::MatrixXd dense = Eigen::MatrixXd(factored) + preconditioner.shift_N_m() * Eigen::MatrixXd::Identity(n, n);
-    for (int c = 0; c < 2; ++c) {
-      Eigen::VectorXd gc = Eigen::VectorXd::Zero(n);
-      const Eigen::Index first = 3 * sim.cells().wall[c], size = 3 * sim.cells().wall_count(c);
-      gc.segment(first, size) = g.segment(first, size);
-      dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
-    }
-    const Eigen::VectorXd expected = dense.ldlt().solve(r);
+    const Eigen::VectorXd expected =
+        dense_with_volume_springs(factored, preconditioner.shift_N_m(), g, sim.cells(), k_c).ldlt().solve(r);
     EXPECT_LT((preconditioner.solve(r) - expected).norm(), 1e-9 * expected.norm()) << "lowered by " << lowered_N_m;
   }
 }
@@ -142,14 +151,8 @@ TEST(NewtonPreconditioner, SolvesWithEveryCellsVolumeSpringWhereContactsJoinTheC
     stiffness.add(a, a, block), stiffness.add(b, b, block), stiffness.add(a, b, -block), stiffness.add(b, a, -block);
     NewtonPreconditioner joined;
     joined.factor(stiffness.matrix(), g, sim.cells(), k_c, true);
-    Eigen::MatrixXd dense = Eigen::MatrixXd(stiffness.matrix()) + joined.shift_N_m() * Eigen::MatrixXd::Identity(n, n);
-    for (int c = 0; c < 2; ++c) {
-      Eigen::VectorXd gc = Eigen::VectorXd::Zero(n);
-      const Eigen::Index first = 3 * sim.cells().wall[c], size = 3 * sim.cells().wall_count(c);
-      gc.segment(first, size) = g.segment(first, size);
-      dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
-    }
-    const Eigen::VectorXd expected = dense.ldlt().solve(r);
+    const Eigen::VectorXd expected =
+        dense_with_volume_springs(stiffness.matrix(), joined.shift_N_m(), g, sim.cells(), k_c).ldlt().solve(r);
     EXPECT_LT((joined.solve(r) - expected).norm(), 1e-9 * expected.norm()) << "joined by " << joining_N_m << " N/m";
     if (joining_N_m == 0) {
       NewtonPreconditioner per_cell;

@@ -173,6 +173,26 @@ TEST(Tissue, AFluidParticleNeverFeelsAnotherCellsFluid) {
   EXPECT_GT((sim.fluid_force().rightCols(cells.fluid_count(1)) - before_1).norm(), 0.0);  // cell 1 did change
 }
 
+// Two pairs of wall particles of different cells, across a 100 um period: 0 and 1 in contact 5.10 um
+// apart (inside the 6 um gap); 2 and 3, 5.10 um apart across the period, bonded by a middle lamella
+// opened 0.4 um and damaged to 0.5 um before (delta_0 = 51 nm): its secant branch.
+class TwoPairs : public ::testing::Test {
+ protected:
+  TwoPairs() : x(3, 4) {
+    x << 0, 5e-6, 0, 99e-6,  //
+        0, 1e-6, 20e-6, 20e-6,  //
+        0, 0, 0, 5e-6;
+    wall_wall.offset = {0, 1, 1, 1, 1};
+    wall_wall.index = {1};
+  }
+  const CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
+  Eigen::Matrix3Xd x;
+  const PeriodicBox box{100e-6, 100e-6};
+  PairList wall_wall;
+  const std::vector<LamellaBond> bonds = {{2, 3, std::hypot(1e-6, 5e-6) - 0.4e-6}};
+  const std::vector<double> peak = {0.5e-6};
+};
+
 TEST(CellContact, RepulsionAndLamellaObeyNewtonsThirdLawAndTheirLaws) {
   // Brittle lamella (delta_f = 0): k = 2e3 N/m, breaking at 5 mN.
   CellContactLaw law{6e-6, 1e3, LamellaLaw{2e3, 5e-3, 0.0}};
@@ -282,28 +302,17 @@ TEST(LamellaLaw, StoredPlusDissipatedEnergyIsTheWorkDoneOnTheBond) {
 
 // The contact and bond energies are the potentials of their forces: -dE/dx of each particle, by
 // central differences, is the force add_cell_contact_forces gives it (across the period too).
-TEST(CellContact, ItsEnergiesAreThePotentialsOfItsForces) {
-  const CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
-  Eigen::Matrix3Xd x(3, 4);
-  x << 0, 5e-6, 0, 99e-6,  // 3 sits across the 100 um period from 2: 6.4 um from it
-      0, 1e-6, 20e-6, 20e-6,  //
-      0, 0, 0, 5e-6;
-  const PeriodicBox box{100e-6, 100e-6};
-  PairList wall_wall;
-  wall_wall.offset = {0, 1, 1, 1, 1};
-  wall_wall.index = {1};
-  const std::vector<LamellaBond> bonds = {{2, 3, 6.0e-6}};  // opened 0.4 um: softening (delta_0 = 51 nm)
-  const std::vector<double> peak_before = {0.5e-6};          // damaged before: the secant branch
+TEST_F(TwoPairs, TheirEnergiesAreThePotentialsOfTheirForces) {
   const auto energy = [&](const Eigen::Matrix3Xd& at) {
-    const CellContactEnergy e = cell_contact_energy(at, wall_wall, bonds, law, box, {1}, peak_before);
+    const CellContactEnergy e = cell_contact_energy(at, wall_wall, bonds, law, box, {1}, peak);
     return e.contact_J + e.lamella_J;
   };
   std::vector<char> intact = {1};
-  std::vector<double> peak = peak_before;
+  std::vector<double> peak_now = peak;
   Eigen::Matrix3Xd force = Eigen::Matrix3Xd::Zero(3, 4);
-  add_cell_contact_forces(x, wall_wall, bonds, law, box, intact, peak, force);
-  ASSERT_EQ(peak, peak_before);  // still inside its peak: the energy is a potential there
-  const CellContactEnergy e = cell_contact_energy(x, wall_wall, bonds, law, box, intact, peak);
+  add_cell_contact_forces(x, wall_wall, bonds, law, box, intact, peak_now, force);
+  ASSERT_EQ(peak_now, peak);  // still inside its peak: the energy is a potential there
+  const CellContactEnergy e = cell_contact_energy(x, wall_wall, bonds, law, box, intact, peak_now);
   EXPECT_NEAR(e.contact_J, 0.5 * 1e3 * std::pow(6e-6 - std::hypot(5e-6, 1e-6), 2), 1e-24);
   EXPECT_GT(e.lamella_J, 0.0);
   EXPECT_NEAR(e.lamella_dissipated_J, law.lamella.dissipated_energy_J(0.5e-6), 1e-24);
@@ -321,20 +330,8 @@ TEST(CellContact, ItsEnergiesAreThePotentialsOfItsForces) {
 // forces (central differences, to 1e-6), less the contact's sideways part -k_c (g - r) / r (I - n n^T),
 // which it leaves out; a bond on its secant branch (damaged before) and a pair across the period included.
 // A pair that the pattern does not join is counted and left out.
-TEST(CellContact, ItsStiffnessIsMinusTheDerivativeOfItsForcesLessTheContactsSidewaysPart) {
-  const CellContactLaw law{6e-6, 1e3, LamellaLaw{1e3, 51e-6, 1.0e-6}};
-  Eigen::Matrix3Xd x(3, 4);
-  x << 0, 5e-6, 0, 99e-6,  // 3 sits across the 100 um period from 2
-      0, 1e-6, 20e-6, 20e-6,  //
-      0, 0, 0, 5e-6;
-  const PeriodicBox box{100e-6, 100e-6};
-  PairList wall_wall;
-  wall_wall.offset = {0, 1, 1, 1, 1};
-  wall_wall.index = {1};
-  // 2 and 3 are 5.10 um apart across the period; their bond, opened 0.4 um, was damaged to 0.5 um before.
-  const std::vector<LamellaBond> bonds = {{2, 3, std::hypot(1e-6, 5e-6) - 0.4e-6}};
+TEST_F(TwoPairs, TheirStiffnessIsMinusTheDerivativeOfTheirForcesLessTheContactsSidewaysPart) {
   const std::vector<char> intact = {1};
-  const std::vector<double> peak = {0.5e-6};
   const auto forces = [&](const Eigen::Matrix3Xd& at) {
     std::vector<char> intact_now = intact;
     std::vector<double> peak_now = peak;
