@@ -333,7 +333,8 @@ Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_
       eq.period_unbalanced = true;
       return eq;
     }
-    // Tension (positive) draws the period in: it grows as the period does.
+    // Tension (positive) asks for a smaller period, and the tension grows with the period: so the step is
+    // -stress / modulus, the modulus d(stress)/d(strain) > 0.
     const Eigen::Vector2d by = (-stress.array() / modulus.array()).cwiseMax(-kLargestPeriodMove).cwiseMin(kLargestPeriodMove);
     double before_J = 0, dissipated_before_J = 0, after_J = 0, dissipated_after_J = 0;
     potential_now(sim, before_J, dissipated_before_J);
