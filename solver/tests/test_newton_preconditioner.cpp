@@ -148,7 +148,7 @@ TEST(NewtonPreconditioner, SolvesWithEveryCellsVolumeSpringWhereContactsJoinTheC
     add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
     const Eigen::Vector3d line = (x.col(b) - x.col(a)).normalized();
     const Eigen::Matrix3d block = joining_N_m * line * line.transpose();
-    stiffness.add(a, a, block), stiffness.add(b, b, block), stiffness.add(a, b, -block), stiffness.add(b, a, -block);
+    stiffness.add_pair(a, b, block);
     NewtonPreconditioner joined;
     joined.factor(stiffness.matrix(), g, sim.cells(), k_c, true);
     const Eigen::VectorXd expected =

@@ -50,6 +50,13 @@ Eigen::Index BlockStiffness::slot(int a, int b) const {
   return matrix_.outerIndexPtr()[3 * b] + 3 * (found - rows.begin());
 }
 
+void BlockStiffness::add_pair(int a, int b, const Eigen::Matrix3d& block) {
+  add(a, a, block);
+  add(b, b, block);
+  add(a, b, -block);
+  add(b, a, -block);
+}
+
 bool BlockStiffness::joins(int a, int b) const {
   const std::vector<int>& rows = rows_of_column_[static_cast<std::size_t>(b)];
   return std::binary_search(rows.begin(), rows.end(), a);

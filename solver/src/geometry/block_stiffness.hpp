@@ -21,6 +21,8 @@ class BlockStiffness {
   // Adds `block` at rows of particle a and columns of particle b; throws std::logic_error where the pattern
   // has no such block (a law reaching beyond the pairs it was given).
   void add(int a, int b, const Eigen::Matrix3d& block);
+  // A pair law's block between a and b: `block` at (a, a) and (b, b), minus it at (a, b) and (b, a).
+  void add_pair(int a, int b, const Eigen::Matrix3d& block);
   // Whether the pattern has a block at particles a and b (a law whose pairs change within a relaxation,
   // a tissue's contacts, adds only those it has).
   bool joins(int a, int b) const;

@@ -55,14 +55,10 @@ int contact_forces(const Eigen::Matrix3Xd& wall_x, const PairList& wall_wall, co
   return broken;
 }
 
-// A pair's stiffness, along n (unit) and across, added at both particles and between them.
+// A pair's stiffness, along n (unit) and across it.
 void add_pair_block(int a, int b, const Eigen::Vector3d& n, double along_N_m, double across_N_m, BlockStiffness& K) {
   const Eigen::Matrix3d nn = n * n.transpose();
-  const Eigen::Matrix3d block = along_N_m * nn + across_N_m * (Eigen::Matrix3d::Identity() - nn);
-  K.add(a, a, block);
-  K.add(b, b, block);
-  K.add(a, b, -block);
-  K.add(b, a, -block);
+  K.add_pair(a, b, along_N_m * nn + across_N_m * (Eigen::Matrix3d::Identity() - nn));
 }
 
 }  // namespace

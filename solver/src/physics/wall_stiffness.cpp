@@ -29,10 +29,7 @@ void add_wall_spring_stiffness(const Eigen::Matrix3Xd& x, const WallMesh& mesh, 
     const double along = law.contraction_N_m + wall::stiff_stiffness(law.G_t_N_m[i], l / l0);
     const Eigen::Matrix3d block = along * u * u.transpose() +
                                   std::max(tension, 0.0) / l * (Eigen::Matrix3d::Identity() - u * u.transpose());
-    K.add(a, a, block);
-    K.add(b, b, block);
-    K.add(a, b, -block);
-    K.add(b, a, -block);
+    K.add_pair(a, b, block);
   }
   for (int k = 0; k < static_cast<int>(x.cols()); ++k) {
     const bool touched = plates.active && plate_overlap(x.col(k), plate_law, plates).touches();
