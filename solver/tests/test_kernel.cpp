@@ -81,3 +81,13 @@ TEST(Kernel, FourLanesGiveTheGradientOfEachDistance) {
   }
   EXPECT_EQ(W.dW_dr_over_r(cellsim::simd::double4{3.0, 4.0, 1e30, 1e200})[3], 0.0);  // beyond the support
 }
+
+TEST(Kernel, FourLanesGiveWOfEachDistance) {
+  const CubicSplineKernel W(1.5);
+  const double r[8] = {0.0, 0.4, 1.4999, 1.5, 2.2, 2.9999, 3.0, 7.0};
+  for (int k = 0; k < 8; k += 4) {
+    const cellsim::simd::double4 lanes = W.W(cellsim::simd::double4{r[k], r[k + 1], r[k + 2], r[k + 3]});
+    for (int l = 0; l < 4; ++l) EXPECT_NEAR(lanes[l], W.W(r[k + l]), 1e-15 * W.W(0.0)) << r[k + l];
+  }
+  EXPECT_EQ(W.W(cellsim::simd::double4{3.0, 4.0, 1e30, 1e200})[3], 0.0);  // beyond the support
+}

@@ -209,6 +209,57 @@ TEST(PressureCoupling, TheBackstopPushesBackOnlyWithinItsRange) {
   EXPECT_EQ(backstop_at(-0.3 * kDx), 0.0);  // farther out than d_b: another sheet's fluid, or gone
 }
 
+// The weights go four pairs of a row at a time and the rest of the row one by one: every pair, in
+// either, gets what the laws give it alone (w(d) W(r) and p_b(d) W(r)), to round-off (the compiler may
+// fuse a multiply and an add in one and not the other), and exact zeros beyond the support; in the
+// skin, the fade and the backstop's range.
+TEST(PressureCoupling, FourPairsAtOnceWeighEachAsTheLawsDo) {
+  Params p = pressure_cell();
+  const CellParticles c = particles_of(build_cell(p));
+  const double h = *p.h0_m;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-0.3 * h, 0.3 * h);
+  // The cell's fluid jittered, and a particle just outside each of 40 wall particles, in their fade.
+  const Eigen::Index n = c.fluid.size(), outside = 40;
+  Eigen::Matrix3Xd fluid_x(3, n + outside);
+  for (Eigen::Index i = 0; i < n; ++i) fluid_x.col(i) = c.fluid.x.col(i) + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+  for (Eigen::Index k = 0; k < outside; ++k)
+    fluid_x.col(n + k) = c.wall.x.col(k * 7) + 0.05 * h * c.vertex_normal.col(k * 7).normalized();
+  const PressureCouplingLaw law{0.8 * h, 2e7};
+  NeighbourLists lists(0.3 * h);  // a skin: some listed pairs lie beyond the support
+  lists.update(fluid_x, c.wall.x, 2 * h, 2 * h);
+  const PairList& pairs = lists.fluid_wall();
+  const CubicSplineKernel kernel(h);
+  PressureCouplingScratch scratch;
+  pressure_coupling_weights(fluid_x, c.wall.x, c.vertex_normal, pairs, kernel, law, 1, scratch);
+  const double fade = kFadeOverH * h;
+  int in_fade = 0, in_backstop = 0, beyond = 0, lanes = 0, alone = 0;
+  for (int i = 0; i < pairs.rows(); ++i) {
+    const int first = pairs.offset[i], count = pairs.offset[i + 1] - first;
+    for (int q = first; q < first + count; ++q) {
+      const int k = pairs.index[q];
+      const Eigen::Vector3d to_wall = c.wall.x.col(k) - fluid_x.col(i), normal = scratch.unit_normal.col(k);
+      const double r2 = to_wall[0] * to_wall[0] + to_wall[1] * to_wall[1] + to_wall[2] * to_wall[2];
+      const double depth = to_wall[0] * normal[0] + to_wall[1] * normal[1] + to_wall[2] * normal[2];
+      const double W = kernel.W(std::sqrt(r2));
+      ASSERT_NEAR(scratch.weight[q], one_sided_weight(depth, fade) * W, 1e-14 * kernel.W(0.0)) << "pair " << q;
+      ASSERT_NEAR(scratch.backstop[q], backstop_pressure_Pa(depth, law) * W, 1e-14 * law.backstop_pressure_Pa * kernel.W(0.0))
+          << "pair " << q;
+      if (W == 0) ASSERT_EQ(scratch.weight[q], 0.0) << "pair " << q;
+      in_fade += depth < 0 && depth > -fade && W > 0;
+      in_backstop += scratch.backstop[q] > 0;
+      beyond += W == 0;
+      (q - first < count / 4 * 4 ? lanes : alone) += 1;
+    }
+  }
+  EXPECT_GT(in_fade, 0);
+  EXPECT_GT(in_backstop, 0);
+  EXPECT_GT(beyond, 0);
+  EXPECT_GT(lanes, 0);
+  EXPECT_GT(alone, 0);
+  EXPECT_TRUE(scratch.any_backstop);
+}
+
 TEST(PressureCoupling, APressurisedCellAtRestHoldsItsPressure) {
   // No mass transfer, fresh: after the relaxation at rest, 4000 steps (2 us) keep the turgor, the
   // volume, every particle inside the wall, and the fluid nearly still. The fluid's jitter (~0.03 m/s

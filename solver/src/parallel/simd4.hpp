@@ -23,9 +23,16 @@ inline void store(double* p, double4 v) { std::memcpy(p, &v, sizeof v); }
 inline double4 sqrt(double4 a) {
   return double4{std::sqrt(a[0]), std::sqrt(a[1]), std::sqrt(a[2]), std::sqrt(a[3])};  // one packed sqrt
 }
+inline double sqrt(double a) { return std::sqrt(a); }
 
 inline double4 max(double4 a, double b) { return a > b ? a : broadcast(b); }
 inline double max(double a, double b) { return a > b ? a : b; }
+inline double4 min(double4 a, double b) { return a < b ? a : broadcast(b); }
+inline double min(double a, double b) { return a < b ? a : b; }
+
+// Lane-wise |a|.
+inline double4 abs(double4 a) { return a < 0.0 ? -a : a; }
+inline double abs(double a) { return a < 0.0 ? -a : a; }
 
 // Lane-wise `condition ? a : b`, for a lane-wise comparison (all bits set where true).
 template <class Mask>

@@ -2,37 +2,63 @@
 
 #include <cmath>
 
+#include "parallel/simd4.hpp"
 #include "parallel/threads.hpp"
 
 namespace cellsim {
 namespace {
 
-// Weights of the pairs of fluid rows [begin, end); returns true if any has a backstop. Pairs the list
-// holds beyond the kernel's support (its skin) weigh nothing.
+using simd::double4;
+
+// Pair q's weight w W and backstop p_b W, for one pair (T = double: the three coordinates of the
+// separation fluid -> wall and the element's unit normal) or four (T = double4, a pair a lane). Pairs
+// the list holds beyond the kernel's support (its skin) weigh nothing: W is 0 there.
+template <class T>
+void weigh(const T (&to_wall)[3], const T (&normal)[3], const CubicSplineKernel& kernel, const PressureCouplingLaw& law,
+           double fade, T& weight, T& backstop) {
+  const T r2 = to_wall[0] * to_wall[0] + to_wall[1] * to_wall[1] + to_wall[2] * to_wall[2];
+  const T W = kernel.W(simd::sqrt(r2));
+  const T depth = to_wall[0] * normal[0] + to_wall[1] * normal[1] + to_wall[2] * normal[2];
+  weight = one_sided_weight(depth, fade) * W;
+  backstop = backstop_pressure_Pa(depth, law) * W;
+}
+
+// Weights of the pairs of fluid rows [begin, end), four pairs of a row at a time and the rest one by
+// one (a pair's numbers do not depend on which); returns true if any has a backstop.
 bool weigh_rows(const Eigen::Matrix3Xd& fluid_x, const Eigen::Matrix3Xd& wall_x, const Eigen::Matrix3Xd& unit_normal,
                 const PairList& pairs, const CubicSplineKernel& kernel, const PressureCouplingLaw& law, double fade,
                 Eigen::Index begin, Eigen::Index end, double* weight, double* backstop) {
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
-  const double support2 = kernel.support() * kernel.support();
-  bool any = false;
+  const double* wall = wall_x.data();
+  const double* normal = unit_normal.data();
+  double4 any = {};
+  double any_one = 0;
   for (Eigen::Index i = begin; i < end; ++i) {
-    const Eigen::Vector3d xi = fluid_x.col(i);
-    for (int q = offset[i]; q < offset[i + 1]; ++q) {
-      const int k = index[q];
-      const Eigen::Vector3d to_wall = wall_x.col(k) - xi;
-      const double r2 = to_wall.squaredNorm();
-      if (r2 >= support2) {
-        weight[q] = backstop[q] = 0;
-        continue;
+    const double* xi = fluid_x.col(i).data();
+    int q = offset[i];
+    for (; q + 4 <= offset[i + 1]; q += 4) {
+      const int* k = index + q;
+      double4 to_wall[3], n[3];
+      for (int d = 0; d < 3; ++d) {
+        to_wall[d] = double4{wall[3 * k[0] + d], wall[3 * k[1] + d], wall[3 * k[2] + d], wall[3 * k[3] + d]} - xi[d];
+        n[d] = double4{normal[3 * k[0] + d], normal[3 * k[1] + d], normal[3 * k[2] + d], normal[3 * k[3] + d]};
       }
-      const double W = kernel.W(std::sqrt(r2)), depth = to_wall.dot(unit_normal.col(k));
-      weight[q] = one_sided_weight(depth, fade) * W;
-      backstop[q] = backstop_pressure_Pa(depth, law) * W;
-      any = any || backstop[q] != 0;
+      double4 w, b;
+      weigh(to_wall, n, kernel, law, fade, w, b);
+      simd::store(weight + q, w);
+      simd::store(backstop + q, b);
+      any = any + simd::abs(b);
+    }
+    for (; q < offset[i + 1]; ++q) {
+      const int k = index[q];
+      const double to_wall[3] = {wall[3 * k] - xi[0], wall[3 * k + 1] - xi[1], wall[3 * k + 2] - xi[2]};
+      const double n[3] = {normal[3 * k], normal[3 * k + 1], normal[3 * k + 2]};
+      weigh(to_wall, n, kernel, law, fade, weight[q], backstop[q]);
+      any_one = any_one + simd::abs(backstop[q]);
     }
   }
-  return any;
+  return simd::sum(any) != 0 || any_one != 0;
 }
 
 // The wall term of Eq 10 for fluid rows [begin, end).
@@ -65,7 +91,7 @@ double add_force_rows(const FluidParticles& fluid, const Eigen::VectorXd& pressu
     for (int q = offset[i]; q < offset[i + 1]; ++q) {
       const int k = index[q];
       const double coefficient = kBackstop ? s.backstop[q] : pressure[i] * s.weight[q];
-      if (coefficient == 0) continue;
+      if (kBackstop && coefficient == 0) continue;  // few pairs have one: skipped; the pressure's zeros add nothing
       const Eigen::Vector3d fik = -two_volume * coefficient * s.area_vector.col(k);
       force_i += fik;
       on_wall.col(k) -= fik;

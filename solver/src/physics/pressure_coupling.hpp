@@ -35,20 +35,22 @@ struct PressureCouplingLaw {
 };
 
 // The one-sided weight w(d) of a pair whose fluid particle lies at depth d inside the wall element's
-// tangent plane (d < 0: outside): 1 inside, falling as a smoothstep to 0 at d = -fade.
-inline double one_sided_weight(double depth, double fade) {
-  if (depth >= 0) return 1.0;
-  if (depth <= -fade) return 0.0;
-  const double t = -depth / fade;
+// tangent plane (d < 0: outside): 1 inside, falling as a smoothstep to 0 at d = -fade. For one pair
+// (double) or four (simd::double4): t clamped to [0, 1] gives w = 1 and 0 exactly at the ends. A
+// multiplication by 1/fade, which a loop computes once: a division a pair would cost as much as W.
+template <class T>
+T one_sided_weight(T depth, double fade) {
+  const T t = simd::min(simd::max(-depth * (1.0 / fade), 0.0), 1.0);
   return 1.0 - t * t * (3.0 - 2.0 * t);
 }
 
 // The backstop's pressure at depth d: K (1 - d/d_b)^2 for -d_b < d < d_b, else 0 (a particle farther
-// outside than d_b sees another sheet, or has left: the containment check stops the run).
-inline double backstop_pressure_Pa(double depth, const PressureCouplingLaw& law) {
-  if (!(law.backstop_range_m > 0) || depth >= law.backstop_range_m || depth <= -law.backstop_range_m) return 0.0;
-  const double u = 1.0 - depth / law.backstop_range_m;
-  return law.backstop_pressure_Pa * u * u;
+// outside than d_b sees another sheet, or has left: the containment check stops the run). Lanes as above.
+template <class T>
+T backstop_pressure_Pa(T depth, const PressureCouplingLaw& law) {
+  if (!(law.backstop_range_m > 0)) return T{} + 0.0;
+  const T u = 1.0 - depth * (1.0 / law.backstop_range_m);
+  return simd::select(simd::abs(depth) < law.backstop_range_m, law.backstop_pressure_Pa * u * u, T{} + 0.0);
 }
 
 // Kept by the caller between steps (no reallocation). Per listed pair q: weight = w W and backstop =
