@@ -115,7 +115,7 @@ TEST(CavityFluid, PushesOnTheWallAsMinusTheGradientOfItsStoredEnergy) {
   };
   EnergyValues power{};
   Eigen::Matrix3Xd on_wall, backstop;
-  cavity.compute_forces(s, context(b.sim.surface()), power);
+  cavity.compute_forces(s, context(b.sim.surface()), false, power);
   cavity.couple_to_wall(s, context(b.sim.surface()), false, on_wall, backstop, power);
   EXPECT_GT(cavity.cell_mean_pressure_Pa(b.sim.cells())[0], b.p.turgor_Pa);
   EXPECT_EQ(backstop.norm(), 0.0);

@@ -152,6 +152,35 @@ TEST(FluidPairs, TheContinuityAndForcePassesSplitTheOnePass) {
   EXPECT_EQ(forces.density_diffusion_W, 0.0);
 }
 
+// The force pass of the density drift takes each pair's kernel gradient from the continuity pass just
+// before it (the same positions and h) instead of computing it again: the same bits, on one thread and
+// on two (each block reads only its own rows' slots).
+TEST(FluidPairs, TheForcePassOnTheContinuityPassesGradientsGivesTheSameBits) {
+  const double dx = 7.7e-6, viscosity = 0.1;
+  const ListedFluid fluid(9, dx, 4);
+  const auto& [f, kernel, lists, eos] = std::tie(fluid.f, fluid.kernel, fluid.lists, fluid.eos);
+  for (int threads : {1, 2}) {
+    if (threads > 1 && !built_with_openmp()) continue;
+    FluidRates continuity, computed, reused;
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, threads, continuity, 0.0, PairTerms::Continuity);
+    ASSERT_EQ(continuity.pair_gradient.size(), lists.fluid_fluid().index.size());
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, threads, computed, 0.0, PairTerms::Forces);
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, threads, reused, 0.0, PairTerms::Forces,
+                     &continuity.pair_gradient);
+    ASSERT_GT(computed.force.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_TRUE((reused.force.array() == computed.force.array()).all()) << threads << " threads";
+    EXPECT_EQ(reused.viscous_loss_W, computed.viscous_loss_W) << threads << " threads";
+    // Gradients of another state (the pairs moved) give other forces: the pass does read them.
+    FluidParticles moved = f;
+    moved.x *= 1.01;
+    FluidRates other, stale;
+    fluid_pair_terms(moved, lists.fluid_fluid(), kernel, eos, viscosity, threads, other, 0.0, PairTerms::Continuity);
+    fluid_pair_terms(f, lists.fluid_fluid(), kernel, eos, viscosity, threads, stale, 0.0, PairTerms::Forces,
+                     &other.pair_gradient);
+    EXPECT_GT((stale.force - computed.force).cwiseAbs().maxCoeff(), 1e-3 * computed.force.cwiseAbs().maxCoeff());
+  }
+}
+
 // Rows go 256 at a time, each chunk writing the records its pairs reach just before it; a thread's
 // pairs also reach the next block's first records, written before the barrier. With blocks of many
 // chunks every record must still be written before it is read, and every sum zeroed before it adds.

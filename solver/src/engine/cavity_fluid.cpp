@@ -64,7 +64,7 @@ double CavityFluid::density_in_increment(int cell, double volume_m3, const Equat
 }
 
 // Each cell's density and pressure at its enclosed volume now (in an increment: Eq 11's backward Euler).
-void CavityFluid::compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) {
+void CavityFluid::compute_forces(State& s, const FluidContext& c, bool, EnergyValues& power_W) {
   const int cells = c.cells.count();
   rho_.resize(static_cast<std::size_t>(cells));
   pressure_Pa_.resize(static_cast<std::size_t>(cells));

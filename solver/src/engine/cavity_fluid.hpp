@@ -25,7 +25,7 @@ class CavityFluid final : public FluidModel {
   double follow_smoothing_length(double) override { return 0; }  // no wall-fluid pairs
   bool density_in_drift() const override { return false; }
   void advance_density(State&, const FluidContext&, double, const EnergyValues&) override {}
-  void compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) override;
+  void compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) override;
   void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) override;
   void couple_to_wall(State& s, const FluidContext& c, bool weights_fresh, Eigen::Matrix3Xd& on_wall,
                       Eigen::Matrix3Xd& backstop_on_wall, EnergyValues& power_W) override;

@@ -59,7 +59,8 @@ class FluidModel {
   // (core/energy_terms.hpp), which the engine's kicks integrate.
   virtual void advance_density(State& s, const FluidContext& c, double dt, const EnergyValues& power_W) = 0;
   // The fluid's own forces and rates at the current positions, then Eq 11's mass transfer.
-  virtual void compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) = 0;
+  // pairs_fresh: advance_density already went over the fluid's pairs at these positions.
+  virtual void compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) = 0;
   virtual void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) = 0;
   // The forces between fluid and wall: on the fluid, its own; on the wall, into on_wall (its share
   // beyond the fluid's pressure, the pressure coupling's backstop, into backstop_on_wall as well).

@@ -203,7 +203,7 @@ void Simulation::compute_rates(double density_step_s) {
   const FluidContext fluid_now = fluid_context();  // the positions' surface and lists, the clock's EOS
   if (density_step_s > 0) fluid_->advance_density(s_, fluid_now, density_step_s, energy_power_W_);
   timer_.lap(Phase::DensityDrift);
-  fluid_->compute_forces(s_, fluid_now, energy_power_W_);
+  fluid_->compute_forces(s_, fluid_now, density_step_s > 0, energy_power_W_);
   timer_.lap(Phase::FluidPairs);
   fluid_->transfer_mass(s_, fluid_now, energy_power_W_);
   timer_.lap(Phase::MassTransfer);

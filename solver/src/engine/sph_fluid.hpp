@@ -27,7 +27,7 @@ class SphFluid final : public FluidModel {
   double follow_smoothing_length(double h_m) override;
   bool density_in_drift() const override { return drift_density_; }
   void advance_density(State& s, const FluidContext& c, double dt, const EnergyValues& power_W) override;
-  void compute_forces(State& s, const FluidContext& c, EnergyValues& power_W) override;
+  void compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) override;
   void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) override;
   void couple_to_wall(State& s, const FluidContext& c, bool weights_fresh, Eigen::Matrix3Xd& on_wall,
                       Eigen::Matrix3Xd& backstop_on_wall, EnergyValues& power_W) override;

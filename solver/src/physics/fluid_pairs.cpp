@@ -56,11 +56,13 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
 // is what the pair adds to the kinetic energy). The differences x_ij, v_ij are taken on the records,
 // before the transpose: fewer registers stay live.
 // kDiffusion: with the delta-SPH density diffusion (a separate loop: without it, nothing changes);
-// kTerms: which terms (PairTerms), each set its own loop.
-template <bool kDiffusion, PairTerms kTerms>
+// kTerms: which terms (PairTerms), each set its own loop. A continuity pass writes each slot's kernel
+// gradient g to gradient_out; a forces pass with kKnownGradient reads it from known_gradient instead.
+template <bool kDiffusion, PairTerms kTerms, bool kKnownGradient>
 void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, Viscosity viscosity,
                     double diffusion_m2_s, const double* records, int begin, int end, double* sums,
-                    double& viscous_loss, double& diffusion_power) {
+                    double& viscous_loss, double& diffusion_power, const double* known_gradient,
+                    double* gradient_out) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
@@ -87,9 +89,15 @@ void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_st
                       v_i - record(velocity, 3));
       const Lanes factors_j(record(factors, 0), record(factors, 1), record(factors, 2), record(factors, 3));
       const double4 mj = factors_j.field[0], Aj = factors_j.field[1], Vj = factors_j.field[2];
-      const double4 g = kernel.dW_dr_over_r(
-          simd::sqrt(xij.field[0] * xij.field[0] + xij.field[1] * xij.field[1] + xij.field[2] * xij.field[2]));
       constexpr bool kContinuity = kTerms != PairTerms::Forces, kForces = kTerms != PairTerms::Continuity;
+      double4 g;
+      if constexpr (kKnownGradient) {
+        g = simd::load(known_gradient + q);
+      } else {
+        g = kernel.dW_dr_over_r(
+            simd::sqrt(xij.field[0] * xij.field[0] + xij.field[1] * xij.field[1] + xij.field[2] * xij.field[2]));
+        if constexpr (kTerms == PairTerms::Continuity) simd::store(gradient_out + q, g);
+      }
       double4 minus_drho_j = {};  // on_j's last lane, taken from j's sums
       if constexpr (kContinuity) {
         const double4 v_dot_grad =
@@ -172,8 +180,8 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // pairs read it: a tissue's fluid is many times the cache (docs/performance.md). The sums see the
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
-               Viscosity viscosity, double diffusion_m2_s, PairTerms terms, int r0, int r1, int written, FluidRates& out,
-               Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
+               Viscosity viscosity, double diffusion_m2_s, PairTerms terms, const double* known_gradient, int r0, int r1,
+               int written, FluidRates& out, Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
   for (int c0 = r0; c0 < r1; c0 += kChunkRows) {
@@ -188,10 +196,10 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
       sums.middleCols(zeroed, reach - zeroed).setZero();
       zeroed = reach;
     }
-    const auto pass = [&](auto diffusion, auto terms) {
-      add_pair_terms<decltype(diffusion)::value, decltype(terms)::value>(
+    const auto pass = [&](auto diffusion, auto terms, auto known) {
+      add_pair_terms<decltype(diffusion)::value, decltype(terms)::value, decltype(known)::value>(
           pairs, kernel, viscosity, diffusion_m2_s, out.records.data(), c0, c1, sums.data(), viscous_loss,
-          diffusion_power);
+          diffusion_power, known_gradient, out.pair_gradient.data());
     };
     using Off = std::false_type;
     using On = std::true_type;
@@ -200,11 +208,11 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
     using Forces = std::integral_constant<PairTerms, PairTerms::Forces>;
     const bool diffusion = diffusion_m2_s != 0;
     if (terms == PairTerms::Forces)
-      pass(Off{}, Forces{});
+      known_gradient ? pass(Off{}, Forces{}, On{}) : pass(Off{}, Forces{}, Off{});
     else if (terms == PairTerms::Continuity)
-      diffusion ? pass(On{}, Continuity{}) : pass(Off{}, Continuity{});
+      diffusion ? pass(On{}, Continuity{}, Off{}) : pass(Off{}, Continuity{}, Off{});
     else
-      diffusion ? pass(On{}, All{}) : pass(Off{}, All{});
+      diffusion ? pass(On{}, All{}, Off{}) : pass(Off{}, All{}, Off{});
   }
 }
 
@@ -237,8 +245,10 @@ void add_thread_sums(Eigen::Index begin, Eigen::Index end, FluidRates& out) {
 // if the runtime runs the blocks on fewer threads than asked.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
-                      double density_diffusion_m2_s, PairTerms terms) {
+                      double density_diffusion_m2_s, PairTerms terms, const std::vector<double>* known_gradient) {
+  assert(!known_gradient || (terms == PairTerms::Forces && known_gradient->size() == pairs.index.size()));
   const Eigen::Index n = f.size();
+  if (terms == PairTerms::Continuity) out.pair_gradient.resize(pairs.index.size());
   out.pressure.resize(n);
   out.records.resize(kRecord, n + 1);
   out.thread_sums.resize(static_cast<std::size_t>(threads));
@@ -278,8 +288,9 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     if (stride > 1) wait_for_all_threads();  // every record another block reads is written
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
-      add_block(f, pairs, kernel, eos, viscosity, density_diffusion_m2_s, terms, out.first_row[b], out.first_row[b + 1],
-                out.written[b], out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
+      add_block(f, pairs, kernel, eos, viscosity, density_diffusion_m2_s, terms,
+                known_gradient ? known_gradient->data() : nullptr, out.first_row[b], out.first_row[b + 1], out.written[b],
+                out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
     }
   };
   if (threads == 1)

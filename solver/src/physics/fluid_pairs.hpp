@@ -30,6 +30,9 @@ struct FluidRates {
   long halo_build = -1;
   std::vector<int> written;  // block t wrote records [first_row[t], written[t]) before the barrier
   std::vector<double> block_viscous_loss_W, block_diffusion_W;  // per block, added in block order
+  // A continuity pass's (1/r) dW/dr of each slot of the list (padding: 0), for the forces pass at the
+  // same positions (time.density_update = drift): the two passes share every pair's distance.
+  std::vector<double> pair_gradient;
 };
 
 // The fluid's viscosity mu (Eq 4): one value, or one per particle (a cell's, heterogeneity.hpp). Fluid
@@ -48,8 +51,11 @@ enum class PairTerms { All, Continuity, Forces };
 
 // Overwrites out (sized to the fluid); the terms a pass leaves out come out as zeros. threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
 // density_diffusion_m2_s: delta h c0 of the delta-SPH density diffusion (sph_terms.hpp), 0 for none.
+// known_gradient (a Forces pass only): the pair_gradient of a Continuity pass over the same list at the
+// same positions and h, used in place of computing it (the same bits).
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
-                      double density_diffusion_m2_s = 0, PairTerms terms = PairTerms::All);
+                      double density_diffusion_m2_s = 0, PairTerms terms = PairTerms::All,
+                      const std::vector<double>* known_gradient = nullptr);
 
 }  // namespace cellsim
