@@ -152,6 +152,38 @@ TEST(CliErrors, AClosedCellWarnsOfTheSphKeysItIgnores) {
   EXPECT_EQ(r.err.find("cell.n_wall"), std::string::npos) << r.err;
 }
 
+// The case `validate` prints, every derived key filled in, reads back without a warning: a key the
+// case ignores is warned only where its value differs from the one the case takes without it. (A
+// dynamic cell's resolved compression.cell_rotation = free was warned as ignored.)
+TEST(CliErrors, AResolvedCaseReadsBackWithoutAWarning) {
+  ScratchDir dir("resolved");
+  const std::vector<std::string> cases = {
+      R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5}})",
+      R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5}, "fluid": {"h_over_dx": 1.2},
+          "coupling": {"model": "pressure"}})",
+      R"({"cell": {"n_wall": 162, "diameter_um": 40}, "fluid": {"model": "cavity"}, "time": {"dt_ns": 0.5}})",
+      R"({"cell": {"n_wall": 162, "diameter_um": 40}, "fluid": {"model": "cavity"}, "time": {"scheme": "quasi_static"}})",
+      R"({"cell": {"n_wall": 162, "diameter_um": 40}, "fluid": {"model": "cavity"}, "time": {"scheme": "quasi_static"},
+          "tissue": {"cells_x": 2, "cells_y": 2, "lateral": "periodic"}})"};
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const auto first = run_cli({"validate", dir.write("case" + std::to_string(k) + ".json", cases[k])}, dir);
+    ASSERT_EQ(first.exit_code, 0) << first.err;
+    EXPECT_EQ(first.err.find("WARNING"), std::string::npos) << cases[k] << ": " << first.err;
+    const auto again = run_cli({"validate", dir.write("resolved" + std::to_string(k) + ".json", first.out)}, dir);
+    EXPECT_EQ(again.exit_code, 0) << again.err;
+    EXPECT_EQ(again.err.find("WARNING"), std::string::npos) << cases[k] << ": " << again.err;
+    EXPECT_EQ(again.out, first.out) << cases[k];
+  }
+}
+
+// h0 and h0/dx both given: the same smoothing length is taken (above), two different ones are refused.
+TEST(CliErrors, TwoDifferentSmoothingLengthsAreRefused) {
+  ScratchDir dir("two h");
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5},
+      "fluid": {"h0_um": 5.0, "h_over_dx": 1.2}})");
+  expect_input_error({"validate", c}, dir, {"fluid.h0_um = 5", "fluid.h_over_dx = 1.2", "differ"});
+}
+
 // A relaxation that does not reach equilibrium within its cap stops the run (exit 3), naming the step
 // and the keys, and leaves only a partial file.
 TEST(CliErrors, ARelaxationOverItsCapStopsTheRun) {

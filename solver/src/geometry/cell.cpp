@@ -71,10 +71,13 @@ void resolve_derived_geometry(Params& p) {
   if (!p.r0_m) p.r0_m = derived_r0_m(radius, n_wall);
   if (!p.fill_gap_m) p.fill_gap_m = default_fill_gap_m(radius, farthest, *p.r0_m, p.coupling_model);
   const double dx = lattice_spacing_m(radius, *p.fill_gap_m, farthest, fill_gap_given);
-  if (p.h0_m && p.h_over_dx) {
+  // Both given: the same h (a case as `cellsim validate` prints it, to 15 digits) is h0; two different
+  // ones are refused.
+  if (p.h0_m && p.h_over_dx && std::abs(*p.h0_m - *p.h_over_dx * dx) > 1e-12 * *p.h0_m) {
     std::ostringstream msg;
     msg << "fluid.h0_um = " << *p.h0_m * 1e6 << " and fluid.h_over_dx = " << *p.h_over_dx
-        << " both set the smoothing length: set one of them";
+        << " both set the smoothing length, and differ (this cell's h0/dx = " << *p.h0_m / dx
+        << "): set one of them";
     throw InputError(msg.str());
   }
   if (!p.h0_m)  // the paper's h0 scaled with dx (as written, so the default's bits stay those of the rule)

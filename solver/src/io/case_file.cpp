@@ -308,9 +308,18 @@ bool given_away_from_default(const json& doc, const std::string& key) {
 
 std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p) {
   std::vector<std::string> ignored;
+  // A key whose value is the one the case takes without it (as `cellsim validate` prints a resolved
+  // case: compression.cell_rotation = free for a dynamic cell) asks for nothing the case does not do.
+  const auto as_without = [&](const std::string& key) {
+    const std::size_t dot = key.find('.');
+    const std::string section = key.substr(0, dot), name = key.substr(dot + 1);
+    json without = doc;
+    without[section].erase(name);
+    return case_to_json(validate_case(without))[section][name] == case_to_json(p)[section][name];
+  };
   const auto add = [&](const std::vector<std::string>& keys) {
     for (const auto& key : keys)
-      if (given_away_from_default(doc, key)) ignored.push_back(key);
+      if (given_away_from_default(doc, key) && !as_without(key)) ignored.push_back(key);
   };
   if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
   if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);

@@ -121,7 +121,9 @@ std::vector<ParamSpec> build_specs() {
            "delta of the delta-SPH density diffusion, d(rho_i)/dt += delta h c0 sum_j V_j psi_ij . grad W (ours, not "
            "the paper's; 0: off; 0.1 is the usual value, Antuono et al. 2010)", "sph_terms.hpp, docs/model.md §2"),
       derived("fluid.h0_um", "um", kMicro, &P::h0_m, 0, false, 1000, true,
-              "initial SPH smoothing length h0 (set this or fluid.h_over_dx, not both)", "Eq 5, Eq 6",
+              "initial SPH smoothing length h0 (set this or fluid.h_over_dx; both only if they agree, as a "
+              "resolved case has them)",
+              "Eq 5, Eq 6",
               "fluid.h_over_dx x dx (dx: the fluid lattice spacing)"),
       derived("fluid.h_over_dx", "1", 1.0, &P::h_over_dx, 0.5, true, 3, true,
               "smoothing ratio h0 / dx: (4/3) pi (2 h/dx)^3 = 33.5 (h/dx)^3 neighbours within the support 2h, 23 "
