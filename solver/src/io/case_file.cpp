@@ -315,7 +315,11 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
     const std::string section = key.substr(0, dot), name = key.substr(dot + 1);
     json without = doc;
     without[section].erase(name);
-    return case_to_json(validate_case(without))[section][name] == case_to_json(p)[section][name];
+    try {
+      return case_to_json(validate_case(without))[section][name] == case_to_json(p)[section][name];
+    } catch (const InputError&) {
+      return false;  // the case needs the key's value: it is given, and warned as ignored
+    }
   };
   const auto add = [&](const std::vector<std::string>& keys) {
     for (const auto& key : keys)
