@@ -1,7 +1,9 @@
 """The rules every outcome of a fuzzed input must meet (issue 51): a known exit code only (0, 2, 3, 4;
 validate 0 or 2), no sanitizer report, no hang; exit 2 writes nothing; exit 3 leaves only OUT.partial;
-exit 0 writes a file that opens as a completed result; every refusal names a key, a file or a step.
-Each function returns the list of rules an outcome broke (empty: it met them all)."""
+exit 0 writes a file that opens as a completed result; every refusal names a key, a file or a step;
+the case validate prints reads back as itself. Each function returns the list of rules an outcome broke
+(empty: it met them all)."""
+import json
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -21,6 +23,7 @@ class Outcome:
     stderr: str
     out: Path | None = None
     seconds: float = 0.0
+    stdout: str = ""
 
 
 def _message(stderr):
@@ -80,6 +83,33 @@ def judge_run(o, open_result, capped_before_end=False):
                 broken.append("exit 0 wrote a file not marked completed")
             if capped_before_end and not attrs.get("compression_reached_end", 1) and not attrs.get("warning"):
                 broken.append("the compression stopped at its cap before its end, and the file does not say so")
+    return broken
+
+
+def _same_case(a, b, rel=1e-12):
+    """Two resolved cases alike: the same keys and texts, numbers within rel (validate prints 15 digits,
+    so a value derived from a printed one may move in its last)."""
+    if isinstance(a, dict):
+        return isinstance(b, dict) and a.keys() == b.keys() and all(_same_case(a[k], b[k], rel) for k in a)
+    numbers = [isinstance(x, (int, float)) and not isinstance(x, bool) for x in (a, b)]
+    if all(numbers):
+        return abs(a - b) <= rel * max(abs(a), abs(b))
+    return a == b
+
+
+def judge_round_trip(first, again):
+    """The case `validate` printed (first), validated again (again): accepted, the same case, and no
+    warning the first did not give."""
+    if again.returncode != 0:
+        return [f"validate refused the case it printed: {_message(again.stderr)[:200]!r}"]
+    try:
+        same = _same_case(json.loads(first.stdout), json.loads(again.stdout))
+    except ValueError:
+        return ["validate printed a case that is not JSON"]
+    warned = {line for line in first.stderr.splitlines() if "WARNING" in line}
+    broken = [] if same else ["the case validate printed reads back as another case"]
+    broken += [f"the case validate printed warns anew: {line[:200]!r}" for line in again.stderr.splitlines()
+               if "WARNING" in line and line not in warned]
     return broken
 
 

@@ -60,10 +60,10 @@ def execute(args, limit_s, out=None, whole_stacks=False):
     t0 = time.monotonic()
     try:
         done = subprocess.run(args, capture_output=True, timeout=limit_s, env=env)
-        rc, err = done.returncode, done.stderr.decode("utf-8", "replace")
+        rc, err, text = done.returncode, done.stderr.decode("utf-8", "replace"), done.stdout.decode("utf-8", "replace")
     except subprocess.TimeoutExpired as e:
-        rc, err = None, (e.stderr or b"").decode("utf-8", "replace")
-    return rules.Outcome(" ".join(map(str, args))[:300], rc, err, out, time.monotonic() - t0)
+        rc, err, text = None, (e.stderr or b"").decode("utf-8", "replace"), ""
+    return rules.Outcome(" ".join(map(str, args))[:300], rc, err, out, time.monotonic() - t0, text)
 
 
 def result_attributes(path):
@@ -104,8 +104,15 @@ def check_mutant(cellsim, mutant, folder):
             return v.returncode, None, broken + ["validate accepted a file that is not a JSON object"]
         run_case = folder / "tiny.json"
         write_case(run_case, tiny)
-        if execute([cellsim, "validate", run_case, *sets], VALIDATE_LIMIT_S).returncode != 0:
+        t = execute([cellsim, "validate", run_case, *sets], VALIDATE_LIMIT_S)
+        if t.returncode != 0:
             return v.returncode, None, broken  # the caps made it invalid (e.g. a period too small): not run
+        # The case validate prints, resolved (of the tiny case: small, so quick under the sanitizers),
+        # must read back as itself.
+        resolved = folder / "resolved.json"
+        write_case(resolved, t.stdout)
+        broken += [f"validate: {b}" for b in
+                   rules.judge_round_trip(t, execute([cellsim, "validate", resolved], VALIDATE_LIMIT_S))]
     elif v.returncode != 2:
         return v.returncode, None, broken
     out = folder / "out.h5"
