@@ -163,6 +163,7 @@ def check(config, root="."):
                     if fmt(value) not in known:
                         raise ConfigError(f"studies.{study}.vary.{axis}: value {fmt(value)} is not one of the "
                                           f"axis's values {known} (axes.{axis}.coupled names them)")
+                check_labels(config, study, axis)
     references, shrinkage = config.get("references", {}), config.get("shrinkage_references", {})
     for section, entries in (("references", references), ("shrinkage_references", shrinkage)):
         for ref, spec in entries.items():
@@ -211,6 +212,25 @@ def check(config, root="."):
             raise ConfigError(f"{where}.where: selects no case of study '{spec['study']}'")
     check_compare_with(config)
     check_cases(config)
+
+
+def check_labels(config, study, axis):
+    """A keyless axis's value names the case its coupled keys make of base. Where base already holds a
+    value's whole coupled entry (config/converged.yaml's base is resolution level 2), the base value names
+    that value's case too: level-2 cells would be called level 1, and run twice. Refused."""
+    spec, base = config["axes"][axis], config["base"]
+    coupled, at_base = spec["coupled"], fmt(spec["base_value"])
+    for value in config["studies"][study]["vary"][axis]:
+        if fmt(value) == at_base:
+            continue
+        shared = list(coupled.get(fmt(value), {}))
+        at_base_value = {k: coupled.get(at_base, {}).get(k, get_key(base, k)) for k in shared}
+        if shared and all(get_key(base, k) is not None and coupled[fmt(value)][k] == at_base_value[k] for k in shared):
+            raise ConfigError(
+                f"axes.{axis}: base sets {', '.join(f'{k} = {at_base_value[k]}' for k in shared)}, as its value "
+                f"{fmt(value)} does, so studies.{study} would call those cells {fmt(value)} and {at_base} (its "
+                f"base_value) alike: in this config, give the axis the base_value that base is and coupled keys "
+                f"for the other values (as config/converged.yaml does for resolution)")
 
 
 def check_compare_with(config):

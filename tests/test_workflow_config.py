@@ -1,12 +1,13 @@
 """The workflow's config: bad configs stop before any job with the key named; the default config
 plans every case and figure; a study and a figure added in config are planned."""
+import json
 import subprocess
 
 import pytest
 import yaml
 
 from analysis import matrix
-from conftest import job_counts
+from conftest import job_counts, workflow_config
 
 SNAKEMAKE = ["snakemake", "--nolock", "-n", "--cores", "2"]
 
@@ -87,6 +88,9 @@ def write_config(tmp_path, change):
      ["compare_with.figures: 'fig02' is not a curves figure"]),                     # shapes have no curves
     ({"compare_with": {"output_dir": "results", "label": "paper"}},
      ["'this_run' is a required property", "instance['compare_with']"]),            # incomplete comparison
+    ({"base": {"cell": {"n_fluid": 8717, "n_wall": 4134}, "settle": {"max_iterations": 40000}}},
+     ["axes.resolution: base sets cell.n_fluid = 8717", "as its value 2 does",
+      "studies.convergence_resolution"]),                                          # level-2 cells called level 1
 ])
 def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, change, named):
     done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")
@@ -119,6 +123,22 @@ def test_converged_config_plans_the_papers_studies_and_the_bounds_in_its_own_fol
     for setting in ('"n_fluid": 8717', '"model": "pressure"', '"h_over_dx": 1.2', '"dt_ns": 0.5'):  # level 2's
         assert setting in done.stdout
     assert '"n_fluid": 3082' not in done.stdout  # no case left at the paper's level 1 (the 200 um cell included)
+
+
+def test_converged_config_labels_the_levels_its_inherited_studies_vary_by_their_cells(root):
+    """Its base is resolution level 2 at h0/dx 1.2, so the convergence target's studies would have called
+    those cells level 1 and h0/dx 0.888 (and run level 2 twice, as 1 and 2): the file relabels the two axes."""
+    cases = matrix.expand(workflow_config(root, ["config/converged.yaml"]))
+    levels = {}
+    for case in cases.values():
+        if "convergence_resolution" in case.studies and case.values["dryness"] == 1.0:
+            levels[case.values["resolution"]] = (case.case["cell"]["n_fluid"], case.case["cell"]["n_wall"])
+    assert levels == {1: (3082, 2067), 2: (8717, 4134), 3: (24656, 8268)}
+    smoothing = {case.values["smoothing"]: case.case["fluid"]["h_over_dx"] for case in cases.values()
+                 if "smoothing_ratio" in case.studies and case.values["dryness"] == 1.0}
+    assert smoothing == {0.888: None, 1.2: 1.2, 1.5: 1.5}  # None: the paper's h0, derived
+    bodies = [json.dumps(case.case, sort_keys=True) for case in cases.values()]
+    assert len(set(bodies)) == len(bodies), "two names, one case"
 
 
 def test_added_study_and_figure_are_planned(root, tmp_path):
