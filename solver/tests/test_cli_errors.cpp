@@ -204,7 +204,16 @@ TEST(CliErrors, TwoDifferentSmoothingLengthsAreRefused) {
   expect_input_error({"validate", c}, dir, {"fluid.h0_um = 5", "fluid.h_over_dx = 1.2", "differ"});
 }
 
-// A relaxation that does not reach equilibrium within its cap stops the run (exit 3), naming the step
+// An h0 in um is checked as the h0/dx it makes on the cell's lattice (found by the fuzzer's round trip:
+// h0 = 0.5 um was taken, printed with h0/dx = 0.023, and that printed case refused).
+TEST(CliErrors, AnH0ThatMakesH0OverDxOutOfItsRangeIsRefused) {
+  ScratchDir dir("h0 range");
+  const auto c = dir.write("case.json", R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5},
+      "fluid": {"h0_um": 0.5}})");
+  expect_input_error({"validate", c}, dir, {"fluid.h0_um = 0.5", "h0/dx = 0.02", "fluid.h_over_dx's range"});
+}
+
+
 // and the keys, and leaves only a partial file.
 TEST(CliErrors, ARelaxationOverItsCapStopsTheRun) {
   ScratchDir dir("relaxation cap");

@@ -80,6 +80,12 @@ std::string show(const json& v) {
                    "'? (run 'cellsim params' for the list of keys)");
 }
 
+bool within_range(const ParamSpec& spec, double x) {
+  const bool above = spec.min_inclusive ? x >= spec.min : x > spec.min;
+  const bool below = spec.max_inclusive ? x <= spec.max : x < spec.max;
+  return above && below;
+}
+
 // Validates one leaf against its spec and stores it (in SI) into p.
 void assign(const ParamSpec& spec, const json& value, Params& p) {
   const std::string where = spec.key + " = " + show(value);
@@ -110,9 +116,7 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
   if (!std::isfinite(x)) throw InputError(where + ": value must be finite (" + describe_range(spec) + ")");
   if (is_integer(spec) && x != std::floor(x))
     throw InputError(where + ": expected an integer (" + describe_range(spec) + ")");
-  const bool above = spec.min_inclusive ? x >= spec.min : x > spec.min;
-  const bool below = spec.max_inclusive ? x <= spec.max : x < spec.max;
-  if (!above || !below)
+  if (!within_range(spec, x))
     throw InputError(where + ": out of range; allowed " + describe_range(spec) + " (" + spec.unit + ")");
   std::visit(
       [&](auto member) {
@@ -371,6 +375,15 @@ Params validate_case(const json& doc) {
   resolve_stage_caps(p);
   resolve_volume_closure(p);
   resolve_derived_geometry(p);  // r0, the fill gap, h0 and h0/dx, the wall gap: from the paper's cell (cell.hpp)
+  // An h0 in um makes an h0/dx of this cell's lattice, which the case as validate prints it gives too: it
+  // must lie in that key's range (h0 = 0.5 um on a 21 um lattice left the fluid no neighbours).
+  const ParamSpec& ratio = *find_param("fluid.h_over_dx");
+  if (!within_range(ratio, *p.h_over_dx)) {
+    std::ostringstream msg;
+    msg << "fluid.h0_um = " << *p.h0_m * 1e6 << " gives h0/dx = " << *p.h_over_dx << " on this cell's fluid lattice (dx = "
+        << *p.h0_m / *p.h_over_dx * 1e6 << " um): outside fluid.h_over_dx's range " << describe_range(ratio);
+    throw InputError(msg.str());
+  }
   return p;
 }
 
