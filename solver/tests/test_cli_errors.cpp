@@ -213,7 +213,22 @@ TEST(CliErrors, AnH0ThatMakesH0OverDxOutOfItsRangeIsRefused) {
   expect_input_error({"validate", c}, dir, {"fluid.h0_um = 0.5", "h0/dx = 0.02", "fluid.h_over_dx's range"});
 }
 
+// Two more the round trip found: a length so small that it is 0 in metres passed "> 0"; a wall of
+// thickness 0 derived a wall gap of 0, out of that key's range. Each is refused, naming its key.
+TEST(CliErrors, ALengthThatUnderflowsAndAGapDerivedAsZeroAreRefused) {
+  ScratchDir dir("underflow");
+  const auto tiny = dir.write("tiny.json", R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5},
+      "compression": {"plate_width_um": 5e-324}})");
+  expect_input_error({"validate", tiny}, dir, {"compression.plate_width_um", "too small to hold in SI units"});
+  const auto thin = dir.write("thin.json", R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5},
+      "wall": {"thickness_um": 0}})");
+  expect_input_error({"validate", thin}, dir, {"tissue.wall_gap_um", "wall.thickness_um = 0"});
+  const auto gap = dir.write("gap.json", R"({"cell": {"n_wall": 162, "n_fluid": 100}, "time": {"dt_ns": 0.5},
+      "wall": {"thickness_um": 0}, "tissue": {"wall_gap_um": 6}})");
+  EXPECT_EQ(run_cli({"validate", gap}, dir).exit_code, 0);
+}
 
+// A relaxation that does not reach equilibrium within its cap stops the run (exit 3), naming the step
 // and the keys, and leaves only a partial file.
 TEST(CliErrors, ARelaxationOverItsCapStopsTheRun) {
   ScratchDir dir("relaxation cap");

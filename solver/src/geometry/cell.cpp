@@ -83,7 +83,12 @@ void resolve_derived_geometry(Params& p) {
   if (!p.h0_m)  // the paper's h0 scaled with dx (as written, so the default's bits stay those of the rule)
     p.h0_m = p.h_over_dx ? *p.h_over_dx * dx : kReferenceH0_m * dx / reference_fluid_spacing();
   p.h_over_dx = *p.h0_m / dx;
-  if (!p.wall_gap_m) p.wall_gap_m = p.thickness_m;  // model.md §10: facing walls one wall thickness apart
+  if (!p.wall_gap_m) {  // model.md §10: facing walls one wall thickness apart
+    if (!(p.thickness_m > 0))
+      throw InputError("tissue.wall_gap_um derives from wall.thickness_um = 0 (facing walls one thickness apart) "
+                       "and must be positive: give tissue.wall_gap_um, or a wall thicker than 0");
+    p.wall_gap_m = p.thickness_m;
+  }
 }
 
 double fluid_spacing_m(const Params& p) {

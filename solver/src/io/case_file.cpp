@@ -118,6 +118,8 @@ void assign(const ParamSpec& spec, const json& value, Params& p) {
     throw InputError(where + ": expected an integer (" + describe_range(spec) + ")");
   if (!within_range(spec, x))
     throw InputError(where + ": out of range; allowed " + describe_range(spec) + " (" + spec.unit + ")");
+  if (x != 0 && !std::isnormal(x * spec.to_si))  // 5e-324 um passed "> 0" and became 0 m
+    throw InputError(where + ": too small to hold in SI units (" + describe_range(spec) + ", in " + spec.unit + ")");
   std::visit(
       [&](auto member) {
         using M = decltype(member);
