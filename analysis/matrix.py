@@ -223,14 +223,14 @@ def check_labels(config, study, axis):
     for value in config["studies"][study]["vary"][axis]:
         if fmt(value) == at_base:
             continue
-        shared = list(coupled.get(fmt(value), {}))
-        at_base_value = {k: coupled.get(at_base, {}).get(k, get_key(base, k)) for k in shared}
-        if shared and all(get_key(base, k) is not None and coupled[fmt(value)][k] == at_base_value[k] for k in shared):
+        keys = list(coupled.get(fmt(value), {}))
+        at_base_value = {k: coupled.get(at_base, {}).get(k, get_key(base, k)) for k in keys}
+        if keys and all(get_key(base, k) is not None and coupled[fmt(value)][k] == at_base_value[k] for k in keys):
             raise ConfigError(
-                f"axes.{axis}: base sets {', '.join(f'{k} = {at_base_value[k]}' for k in shared)}, as its value "
-                f"{fmt(value)} does, so studies.{study} would call those cells {fmt(value)} and {at_base} (its "
-                f"base_value) alike: in this config, give the axis the base_value that base is and coupled keys "
-                f"for the other values (as config/converged.yaml does for resolution)")
+                f"axes.{axis}: base sets {', '.join(f'{k} = {at_base_value[k]}' for k in keys)}, as its value "
+                f"{fmt(value)} does, so studies.{study} would run that case under two labels, {fmt(value)} and "
+                f"{at_base} (its base_value): in this config, give the axis the base_value that base is and "
+                f"coupled keys for the other values (as config/converged.yaml does for resolution)")
 
 
 def check_compare_with(config):
