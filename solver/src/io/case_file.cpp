@@ -316,13 +316,14 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
   std::vector<std::string> ignored;
   // A key whose value is the one the case takes without it (as `cellsim validate` prints a resolved
   // case: compression.cell_rotation = free for a dynamic cell) asks for nothing the case does not do.
+  const json resolved = case_to_json(p);
   const auto as_without = [&](const std::string& key) {
     const std::size_t dot = key.find('.');
     const std::string section = key.substr(0, dot), name = key.substr(dot + 1);
     json without = doc;
     without[section].erase(name);
     try {
-      return case_to_json(validate_case(without))[section][name] == case_to_json(p)[section][name];
+      return case_to_json(validate_case(without))[section][name] == resolved[section][name];
     } catch (const InputError&) {
       return false;  // the case needs the key's value: it is given, and warned as ignored
     }
