@@ -131,14 +131,14 @@ void SphFluid::advance_density(State& s, const FluidContext& c, double dt, const
 }
 
 // Pressure (Eq 3) and viscous (Eq 4) terms, and (time.density_update = kick) continuity (Eq 10). With
-// pairs_fresh, the continuity pass of advance_density went over the same pairs at these positions: its
-// kernel gradients are reused.
+// pairs_fresh, the continuity pass of advance_density went over the same pairs at these positions and
+// velocities: its kernel gradients and records are reused.
 void SphFluid::compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) {
   const CubicSplineKernel kernel(s.smoothing_length_m);
   fluid_pair_terms(s.fluid, c.neighbours.fluid_fluid(), kernel, c.eos, viscosity(), c.threads, rates_,
                    p_.density_diffusion * s.smoothing_length_m * c.eos.sound_speed_m_s(),
                    drift_density_ ? PairTerms::Forces : PairTerms::All,
-                   drift_density_ && pairs_fresh ? &continuity_.pair_gradient : nullptr);
+                   drift_density_ && pairs_fresh ? &continuity_ : nullptr);
   power_W[kViscousLoss] = rates_.viscous_loss_W;
   power_W[kDensityDiffusion] = rates_.density_diffusion_W;
 }
