@@ -131,8 +131,8 @@ void SphFluid::advance_density(State& s, const FluidContext& c, double dt, const
 }
 
 // Pressure (Eq 3) and viscous (Eq 4) terms, and (time.density_update = kick) continuity (Eq 10). With
-// pairs_fresh, the continuity pass of advance_density went over the same pairs at these positions and
-// velocities: its kernel gradients and records are reused.
+// pairs_fresh, the continuity pass of advance_density went over the same pairs at these positions: its
+// kernel gradients are reused.
 void SphFluid::compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) {
   const CubicSplineKernel kernel(s.smoothing_length_m);
   fluid_pair_terms(s.fluid, c.neighbours.fluid_fluid(), kernel, c.eos, viscosity(), c.threads, rates_,

@@ -23,27 +23,15 @@ constexpr double kFarAway_m = 1e30;
 // sums the pairs add up, (force, drho/dt), are records of four in a separate array per thread.
 enum Field : int { kPosition = 0, kVelocity = 4, kFactors = 8, kRecord = 12, kSum = 4 };
 
-// What a pass writes of each record. A forces pass on a continuity pass's records (the same positions
-// and velocities) writes only the factors: the drift has just changed the density and mass. A pass
-// that uses no pressure (continuity without the diffusion's energy) computes none and writes P/rho^2 = 0.
-struct RecordFill {
-  bool kinematics = true;  // position and velocity
-  bool pressure = true;    // the EOS pressure, into out.pressure and the factors
-};
-
-RecordFill fill_for(PairTerms terms, bool diffusion, bool kinematics_known) {
-  return {!kinematics_known, terms != PairTerms::Continuity || diffusion};
-}
-
-// The records of particles [begin, end).
+// The records of particles [begin, end). A pass that uses no pressure (continuity without the
+// diffusion's energy) computes none (the EOS is a seventh power) and writes P/rho^2 = 0.
 void fill_records(const FluidParticles& f, const EquationOfState& eos, Eigen::Index begin, Eigen::Index end,
-                  RecordFill fill, FluidRates& out) {
+                  bool with_pressure, FluidRates& out) {
   for (Eigen::Index i = begin; i < end; ++i) {
-    if (fill.pressure) out.pressure[i] = eos.pressure(f.rho[i]);
-    const double P_over_rho2 = fill.pressure ? out.pressure[i] / (f.rho[i] * f.rho[i]) : 0.0,
+    if (with_pressure) out.pressure[i] = eos.pressure(f.rho[i]);
+    const double P_over_rho2 = with_pressure ? out.pressure[i] / (f.rho[i] * f.rho[i]) : 0.0,
                  volume = f.m[i] / f.rho[i];
-    if (fill.kinematics) out.records.col(i).head<8>() << f.x.col(i), 0.0, f.v.col(i), 0.0;
-    out.records.col(i).segment<4>(kFactors) << f.m[i], P_over_rho2, volume, f.rho[i];
+    out.records.col(i) << f.x.col(i), 0.0, f.v.col(i), 0.0, f.m[i], P_over_rho2, volume, f.rho[i];
   }
 }
 
@@ -74,14 +62,14 @@ std::vector<int> split_rows(const PairList& pairs, int threads) {
 // gradient g to gradient_out; a forces pass with kKnownGradient reads it from known_gradient instead.
 template <bool kDiffusion, PairTerms kTerms, bool kKnownGradient>
 void add_pair_terms(const PairList& pairs, const CubicSplineKernel& kernel_of_step, Viscosity viscosity,
-                    double diffusion_m2_s, const double* kinematics, const double* records, int begin, int end, double* sums,
+                    double diffusion_m2_s, const double* records, int begin, int end, double* sums,
                     double& viscous_loss, double& diffusion_power, const double* known_gradient,
                     double* gradient_out) {
   const CubicSplineKernel kernel = kernel_of_step;  // a local copy: the stores below cannot change it
   const int* offset = pairs.offset.data();
   const int* index = pairs.index.data();
-  const double* position = kinematics + kPosition;
-  const double* velocity = kinematics + kVelocity;
+  const double* position = records + kPosition;
+  const double* velocity = records + kVelocity;
   const double* factors = records + kFactors;
   const double4 uniform_mu_sum = simd::broadcast(2.0 * viscosity.uniform_Pa_s);  // mu_i + mu_j: one viscosity
   const double* mu = viscosity.per_particle_Pa_s;
@@ -195,7 +183,7 @@ int reached_by_earlier_blocks(const FluidRates& out, int t) {
 // same pairs in the same order, so the result does not change.
 void add_block(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel, const EquationOfState& eos,
                Viscosity viscosity, double diffusion_m2_s, PairTerms terms, const double* known_gradient,
-               const double* kinematics, RecordFill fill, int r0, int r1, int written, FluidRates& out,
+               bool with_pressure, int r0, int r1, int written, FluidRates& out,
                Eigen::Matrix4Xd& sums, double& viscous_loss, double& diffusion_power) {
   constexpr int kChunkRows = 256;
   int zeroed = r0;
@@ -204,7 +192,7 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
     int reach = c1;  // one past the last particle the chunk's rows reach
     for (int i = c0; i < c1; ++i) reach = std::max(reach, last_reached(pairs, i) + 1);
     if (std::min(reach, r1) > written) {  // records past r1 are the next block's, written before the barrier
-      fill_records(f, eos, written, std::min(reach, r1), fill, out);
+      fill_records(f, eos, written, std::min(reach, r1), with_pressure, out);
       written = std::min(reach, r1);
     }
     if (reach > zeroed) {
@@ -213,7 +201,7 @@ void add_block(const FluidParticles& f, const PairList& pairs, const CubicSpline
     }
     const auto pass = [&](auto diffusion, auto terms, auto known) {
       add_pair_terms<decltype(diffusion)::value, decltype(terms)::value, decltype(known)::value>(
-          pairs, kernel, viscosity, diffusion_m2_s, kinematics, out.records.data(), c0, c1, sums.data(), viscous_loss,
+          pairs, kernel, viscosity, diffusion_m2_s, out.records.data(), c0, c1, sums.data(), viscous_loss,
           diffusion_power, known_gradient, out.pair_gradient.data());
     };
     using Off = std::false_type;
@@ -262,10 +250,9 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
                       const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
                       double density_diffusion_m2_s, PairTerms terms, const FluidRates* continuity_pass) {
   const Eigen::Index n = f.size();
-  assert(!continuity_pass || (terms == PairTerms::Forces && continuity_pass->pair_gradient.size() == pairs.index.size() &&
-                              continuity_pass->records.cols() == n + 1));
+  assert(!continuity_pass || (terms == PairTerms::Forces && continuity_pass->pair_gradient.size() == pairs.index.size()));
   const double* known_gradient = continuity_pass ? continuity_pass->pair_gradient.data() : nullptr;
-  const RecordFill fill = fill_for(terms, density_diffusion_m2_s != 0, continuity_pass != nullptr);
+  const bool with_pressure = terms != PairTerms::Continuity || density_diffusion_m2_s != 0;
   if (terms == PairTerms::Continuity) out.pair_gradient.resize(pairs.index.size());
   out.pressure.resize(n);
   out.records.resize(kRecord, n + 1);
@@ -293,7 +280,7 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
       const auto b = static_cast<std::size_t>(t);
       const int r0 = out.first_row[b], r1 = out.first_row[b + 1];
       const int reached = reached_by_earlier_blocks(out, t);
-      fill_records(f, eos, r0, reached, fill, out);
+      fill_records(f, eos, r0, reached, with_pressure, out);
       out.written[b] = reached;
       if (r1 == n) {
         out.records.col(n).setZero();
@@ -306,9 +293,8 @@ void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const Cubi
     if (stride > 1) wait_for_all_threads();  // every record another block reads is written
     for (int t = first; t < threads; t += stride) {
       const auto b = static_cast<std::size_t>(t);
-      add_block(f, pairs, kernel, eos, viscosity, density_diffusion_m2_s, terms, known_gradient,
-                continuity_pass ? continuity_pass->records.data() : out.records.data(), fill, out.first_row[b],
-                out.first_row[b + 1], out.written[b],
+      add_block(f, pairs, kernel, eos, viscosity, density_diffusion_m2_s, terms, known_gradient, with_pressure,
+                out.first_row[b], out.first_row[b + 1], out.written[b],
                 out, out.thread_sums[b], out.block_viscous_loss_W[b], out.block_diffusion_W[b]);
     }
   };

@@ -51,9 +51,8 @@ enum class PairTerms { All, Continuity, Forces };
 
 // Overwrites out (sized to the fluid); the terms a pass leaves out come out as zeros. threads: 1, or up to kMaxThreads with OpenMP (threads.hpp).
 // density_diffusion_m2_s: delta h c0 of the delta-SPH density diffusion (sph_terms.hpp), 0 for none.
-// continuity_pass (a Forces pass only): a Continuity pass over the same list at the same positions,
-// velocities and h; its kernel gradients and its records' positions and velocities are used in place of
-// computing and writing them again (the same bits).
+// continuity_pass (a Forces pass only): a Continuity pass over the same list at the same positions and
+// h, whose kernel gradients are used in place of computing them (the same bits).
 // A Continuity pass without the diffusion uses no pressure: it leaves out.pressure unset.
 void fluid_pair_terms(const FluidParticles& f, const PairList& pairs, const CubicSplineKernel& kernel,
                       const EquationOfState& eos, Viscosity viscosity, int threads, FluidRates& out,
