@@ -33,6 +33,20 @@ TEST(CliErrors, MalformedJson) {
   expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"not valid JSON", "case.json"});
 }
 
+// The JSON library stops at a NUL byte: a case followed by one (and anything after it) was read as the
+// case before it, the rest ignored (found by fuzzing: a NUL appended to a valid case was accepted).
+TEST(CliErrors, ANulByteInTheCaseFileIsRefused) {
+  ScratchDir dir("nul");
+  const std::string nul(1, '\0');
+  for (const std::string& tail : {nul, nul + R"({"drying": {"dryness": 0.5}})"}) {
+    const auto c = dir.write("case.json", R"({"cell": {"n_wall": 162}})" + tail);
+    expect_input_error({"validate", c}, dir, {"not valid JSON", "NUL byte at offset 25", "case.json"});
+    expect_input_error({"run", c, "-o", dir.file("out.h5")}, dir, {"NUL byte at offset 25"});
+  }
+  const auto in_a_string = dir.write("case.json", std::string(R"({"cell": {"n_wa)") + '\0' + R"(ll": 162}})");
+  expect_input_error({"validate", in_a_string}, dir, {"NUL byte at offset 15"});
+}
+
 TEST(CliErrors, UnknownKeySuggestsNearest) {
   ScratchDir dir("unknown");
   const auto c = dir.write("case.json", R"({"wall": {"G_Mpa": 18}})");

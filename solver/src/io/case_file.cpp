@@ -228,6 +228,10 @@ json read_case_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot open case file '" + path + "': no such file or not readable");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The JSON library reads a NUL byte as the end of its input: whatever followed would be ignored.
+  if (const auto nul = text.find('\0'); nul != std::string::npos)
+    throw InputError("case file '" + path + "' is not valid JSON: a NUL byte at offset " + std::to_string(nul) +
+                     " (a JSON text holds none; the file may be truncated or binary)");
   json doc;
   try {
     doc = json::parse(text);
