@@ -3,7 +3,8 @@
 #   snakemake --cores 2                               the paper's study (config/config.yaml)
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
 #   snakemake --cores 2 convergence                   resolution and time-step convergence (not default)
-#   snakemake --cores 2 tissue                        tissues of 8 and 27 cells (not default)
+#   snakemake --cores 2 tissue                        a slab of closed cells against one cell (not default;
+#                                                     also tissue_bounds, tissue_check, tissue_large)
 #   snakemake --cores 2 extensions                    elastic-plastic wall, heterogeneous ensembles (not default)
 from snakemake.exceptions import WorkflowError
 from snakemake.utils import min_version, validate
@@ -42,7 +43,8 @@ include: "workflow/rules/common.smk"
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
 localrules: all, build_solver, case_file, dried_case_file, rest_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
-    convergence, aggregate_convergence, convergence_page, tissue, aggregate_tissue, tissue_page, \
+    convergence, aggregate_convergence, convergence_page, tissue, tissue_bounds, tissue_clusters, tissue_check, \
+    tissue_large, aggregate_tissue, tissue_page, \
     extensions, aggregate_extensions, extensions_page
 
 

@@ -71,3 +71,55 @@ def energy_box(summary):
             f"work): the numerics made or destroyed that energy, usually because the time step is too large for the "
             f"case. Their curves are not physics where the residual grows (time series energy_residual_J); try half "
             f"the time step.<ul>{items}</ul></div>")
+
+
+WARNING_KINDS = ("start", "cap", "energy")
+
+
+def warning_kind(part):
+    """What one of the solver's warnings is about: the compression's cap ('compression reached ...'), an
+    energy account left open ('energy account: ...', past kEnergyResidualTolerance), or the start and the
+    drying (the rest)."""
+    if part.startswith("compression reached"):
+        return "cap"
+    return "energy" if part.startswith("energy account") else "start"
+
+
+def _warning_parts(summary, kind):
+    """Each case's warnings ('; '-joined by the solver) of one kind (WARNING_KINDS), as {case: text} of the
+    cases that have any."""
+    out = {}
+    for _, row in summary.iterrows():
+        parts = [p for p in str(row.get("warning") or "").split("; ") if p and warning_kind(p) == kind]
+        if parts:
+            out[row["case"]] = "; ".join(parts)
+    return out
+
+
+def warnings_box(summary):
+    """Cases whose start or drying did not end as it should (drying at its cap unsteady, a relaxation at
+    rest that did not converge), and stages whose energy account is open: visible boxes at the top; and,
+    as a note below them, the compressions that stopped at compression.steps before the end they were
+    asked for (their curves end short)."""
+    if "warning" not in summary.columns:
+        return ""
+    summary = summary.assign(warning=summary["warning"].fillna(""))
+    flagged, capped, open_account = (_warning_parts(summary, kind) for kind in WARNING_KINDS)
+
+    def items(cases):
+        return "<ul>" + "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in cases.items()) + "</ul>"
+
+    box = ""
+    if flagged:
+        box += (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady "
+                f"state as they should.</b> Their compressions start from a cell still settling; raise drying.steps "
+                f"or settle.max_iterations in config.{items(flagged)}</div>")
+    if open_account:
+        box += (f"<div class='warning'><b>Warning: {len(open_account)} of {len(summary)} cases leave their energy "
+                f"account open</b> (a stage's residual beyond the solver's tolerance, docs/model.md §8): energy "
+                f"was made or lost that no term of the account explains.{items(open_account)}</div>")
+    if capped:
+        box += (f"<details><summary>Note: {len(capped)} of {len(summary)} compressions stopped at their cap "
+                f"(compression.steps) before the end they were asked for; their curves end at the strain "
+                f"given.</summary>{items(capped)}</details>")
+    return box

@@ -10,7 +10,7 @@ import markdown
 
 from analysis import bounds, comparison, findings
 from analysis.claims import METHOD
-from analysis.html_page import cell_text, energy_box, write_page
+from analysis.html_page import cell_text, energy_box, warnings_box, write_page
 from analysis.matrix import figure_cases, figure_studies
 
 
@@ -62,41 +62,6 @@ def matrix_table(summary, axes, cell_links=None):
             cells = (f"<td><a href='{html.escape(link)}'>view</a></td>" if link else "<td></td>") + cells
         body.append(f"<tr>{cells}</tr>")
     return f"<div class='wide'><table><tr>{head}</tr>{''.join(body)}</table></div>"  # scrolls in its own box
-
-
-def _warning_parts(summary, compression):
-    """Each case's warnings ('; '-joined by the solver) of the compression's cap (compression=True) or
-    of the start and the drying (False), as {case: text} of the cases that have any."""
-    out = {}
-    for _, row in summary.iterrows():
-        parts = [p for p in str(row.get("warning") or "").split("; ") if p and p.startswith("compression ") == compression]
-        if parts:
-            out[row["case"]] = "; ".join(parts)
-    return out
-
-
-def warnings_box(summary):
-    """Cases whose start or drying did not end as it should (drying at its cap unsteady, a relaxation at
-    rest that did not converge): a visible box at the top; and, as a note below it, the compressions
-    that stopped at compression.steps before the end they were asked for (their curves end short)."""
-    if "warning" not in summary.columns:
-        return ""
-    summary = summary.assign(warning=summary["warning"].fillna(""))
-    flagged, capped = _warning_parts(summary, compression=False), _warning_parts(summary, compression=True)
-
-    def items(cases):
-        return "<ul>" + "".join(f"<li><code>{html.escape(c)}</code>: {html.escape(w)}</li>" for c, w in cases.items()) + "</ul>"
-
-    box = ""
-    if flagged:
-        box += (f"<div class='warning'><b>Warning: {len(flagged)} of {len(summary)} cases did not reach steady "
-                f"state as they should.</b> Their compressions start from a cell still settling; raise drying.steps "
-                f"or settle.max_iterations in config.{items(flagged)}</div>")
-    if capped:
-        box += (f"<details><summary>Note: {len(capped)} of {len(summary)} compressions stopped at their cap "
-                f"(compression.steps) before the end they were asked for; their curves end at the strain "
-                f"given.</summary>{items(capped)}</details>")
-    return box
 
 
 def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=()):

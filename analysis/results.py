@@ -91,10 +91,32 @@ def period_at(f, time_s):
     return float(f["timeseries/period_x_m"][()][int(np.argmin(np.abs(times - time_s)))])
 
 
+STRAIN_MOMENT_TOLERANCE = 0.01  # a 'strain_E' snapshot's nominal strain is E to within this
+
+
+def _nearest_strain(path, snaps, strain):
+    """The compression snapshot (group name) whose nominal strain, at the record nearest its time, is nearest
+    `strain`."""
+    compression = [s for s in snaps if s[2] == 1]
+    if not compression:
+        raise ValueError(f"{path}: no compression snapshot")
+    with open_result(path) as f:
+        times, strains = f["timeseries/time_s"][()], f["timeseries/nominal_strain"][()]
+    at = [float(strains[int(np.argmin(np.abs(times - s[1])))]) for s in compression]
+    best = int(np.argmin(np.abs(np.array(at) - strain)))
+    if abs(at[best] - strain) > STRAIN_MOMENT_TOLERANCE:
+        raise ValueError(f"{path}: no compression snapshot near strain {strain} (the nearest is at {at[best]:.3f})")
+    return compression[best][0]
+
+
 def pick_snapshot(path, moment, dried_path=None):
     """A snapshot by moment: 'end_of_drying' (last drying snapshot, from the dried file if the
-    compression file has none), 'end', or 'compression_K' (K-th of 4 evenly spaced in compression)."""
+    compression file has none), 'end', 'compression_K' (K-th of 4 evenly spaced in compression), or
+    'strain_E' (the compression snapshot whose nominal strain is nearest E; an error where the run's
+    snapshots stop more than 0.01 short of it or pass it by more)."""
     snaps = snapshots(path)
+    if moment.startswith("strain_"):
+        return snapshot(path, _nearest_strain(path, snaps, float(moment.split("_")[1])))
     if moment == "end":
         return snapshot(path, snaps[-1][0])
     if moment == "end_of_drying":

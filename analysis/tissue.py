@@ -45,20 +45,40 @@ def sides(row):
     return row["compression.lateral"] if row.get("tissue.lateral") == "periodic" else "free"
 
 
+# The paper's wall particles a cell at resolution levels 1-3 (config axes.resolution), and its bending k_b.
+LEVEL_OF_N_WALL = {2067: 1, 4134: 2, 8268: 3}
+PAPER_BENDING_J = 1e-10
+PAPER_K_MPA = 20
+
+
 def numerics(row):
-    """The coupling and resolution a case ran with, in words (its single cell is the one alike)."""
-    if row["coupling.model"] != "pressure":
-        return "paper's (LJ)"
-    return f"pressure coupling, h0/dx {row['fluid.h_over_dx']:.3g}"  # the resolved case's ratio (1.2, 1.25, 0.888)
+    """The fluid, scheme, coupling and resolution a case ran with, in words, with what differs from the
+    paper's wall and K (its single cell is the one alike: `single_cell_of`)."""
+    if row["fluid.model"] == "cavity":
+        words = ["closed cells, " + ("quasi-static" if row["time.scheme"] == "quasi_static" else "dynamic")]
+    elif row["coupling.model"] != "pressure":
+        words = ["paper's (LJ)"]
+    else:  # the resolved case's ratio (1.2, 1.25, 0.888)
+        words = [f"SPH, pressure coupling, h0/dx {row['fluid.h_over_dx']:.3g}"]
+    level = LEVEL_OF_N_WALL.get(int(row["cell.n_wall"]))
+    words.append(f"level {level}" if level else f"{int(row['cell.n_wall'])} wall particles a cell")
+    if not np.isclose(row["wall.bending_stiffness_J"], PAPER_BENDING_J, rtol=1e-9, atol=0):
+        words.append(f"k_b {row['wall.bending_stiffness_J']:.2g} J")
+    if not np.isclose(row["fluid.bulk_modulus_MPa"], PAPER_K_MPA, rtol=1e-9, atol=0):
+        words.append(f"K {row['fluid.bulk_modulus_MPa']:g} MPa")
+    return ", ".join(words)
+
+
+# What a single cell shares with the tissue it is compared with, besides the numerics' words.
+ALIKE_KEYS = ["dryness", "compression.plate_speed_m_s", "compression.Lp_m_per_s_Pa"]
 
 
 def single_cell_of(rows, row):
     """The single cell of the same numerics, dryness, plate speed and compression L_p as `row` (None if
     none ran: a tissue at a speed no single cell ran at is compared with none)."""
-    alike = rows[(rows["cells"] == 1) & np.isclose(rows["dryness"], row["dryness"])
-                 & (rows["coupling.model"] == row["coupling.model"])
-                 & np.isclose(rows["compression.plate_speed_m_s"], row["compression.plate_speed_m_s"])
-                 & np.isclose(rows["compression.Lp_m_per_s_Pa"], row["compression.Lp_m_per_s_Pa"])]
+    cells = rows[rows["cells"] == 1]
+    alike = cells[(cells.apply(numerics, axis=1) == numerics(row))
+                  & np.logical_and.reduce([np.isclose(cells[k], row[k]) for k in ALIKE_KEYS])]
     return alike.iloc[0] if len(alike) else None
 
 
@@ -90,6 +110,7 @@ def table(config, summary, series, runs, target="tissue"):
         base = alone["modulus_MPa_gauge"] if alone is not None else np.nan
         line["modulus x single cell"] = line["modulus, gauge [MPa]"] / base if r["cells"] > 1 and base else np.nan
         line["strain reached"] = r.get("strain_reached", np.nan)
+        line.update(energy_columns(r, runs[r["case"]]))
         if r["cells"] > 1:
             bonds = r["lamella_bonds"]
             line.update({"bonds": int(bonds), "broken in drying": int(bonds - r["dried_lamella_intact"]),
@@ -100,6 +121,22 @@ def table(config, summary, series, runs, target="tissue"):
             line.update({"broken between layers": layers, "broken on lateral faces": lateral})
         out.append(line)
     return pd.DataFrame(out)
+
+
+def energy_columns(row, path):
+    """The energy account of a case (docs/model.md §8): its residual at the end of drying over the energy
+    that flowed, over the compression as a share of the plate work, and a periodic slab's period loss
+    (the viscous follower's, in drying and under the plates)."""
+    with open_result(path) as f:
+        series = f["timeseries"]
+        loss = series["period_loss_J"][()] if "period_loss_J" in series else np.full(1, np.nan)
+        stage = series["stage"][()]
+    dried = np.nonzero(stage == 0)[0]
+    loss_dried = loss[dried[-1]] if len(dried) and len(loss) == len(stage) else np.nan
+    return {"energy residual, drying / flows": row.get("drying_energy_residual_over_flow", np.nan),
+            "energy residual, compression / plate work": row.get("compression_energy_residual_over_work", np.nan),
+            "period loss, drying [nJ]": loss_dried * 1e9,
+            "period loss, compression [nJ]": (loss[-1] - loss_dried) * 1e9}
 
 
 def modulus_table(frame):
@@ -174,46 +211,142 @@ def conjecture_answer(compared):
             "dryness, plate speed and drainage, " + "; ".join(parts) + ".")
 
 
-def write_page(path, config, frame, figure_files, target="tissue"):
+def reference_moduli(config, names, root="."):
+    """{label: (the reconstructed curve's modulus fitted as the runs' are [MPa], the source's initial tangent
+    modulus [MPa] or NaN)} of the apple references."""
+    from analysis.figures.modulus import reference_modulus_MPa  # the fit the figures draw
+    return {config["references"][n]["label"]: (reference_modulus_MPa(config, n, root),
+                                               config["references"][n].get("initial_modulus_MPa", np.nan))
+            for n in names}
+
+
+def check_table(frame):
+    """Each case of another fluid beside the SPH slab of the same cells, sides, drainage and dryness: its
+    stresses and moduli over the SPH slab's (the check of the closed cells, target tissue_check)."""
+    sph = frame[frame["numerics"].str.startswith("SPH")]
+    keys = ["cells", "sides", "compression L_p", "X/X0"]
+    out = []
+    for _, r in frame[~frame.index.isin(sph.index)].iterrows():
+        twin = sph[np.logical_and.reduce([np.isclose(sph[k], r[k]) if k != "sides" else sph[k] == r[k] for k in keys])]
+        if twin.empty:
+            continue
+        s = twin.iloc[0]
+        line = {"numerics": r["numerics"], "against": s["numerics"], **{k: r[k] for k in keys}}
+        for column in [f"stress at {e} [kPa]" for e in STRAINS] + ["modulus, nominal [MPa]", "modulus, gauge [MPa]"]:
+            line[column] = r[column]
+            line[f"{column.split(' [')[0]} / SPH's - 1"] = r[column] / s[column] - 1
+        line["gauge at nominal 0.10"] = r["gauge at nominal 0.10"]
+        out.append(line)
+    return pd.DataFrame(out)
+
+
+def texture_analyser_case(frame):
+    """The case nearest a texture analyser's test (drained, and as slow as was run): the fresh slab drained,
+    quasi-static if one ran, else at its slowest plate; None without a drained fresh slab."""
+    slabs = frame[frame["sides"].isin(["confined", "unconfined"]) & np.isclose(frame["X/X0"], 1.0)
+                  & ~np.isclose(frame["compression L_p"], REAL_LP, rtol=1e-9, atol=0)
+                  & frame["modulus, gauge [MPa]"].notna()]
+    if slabs.empty:
+        return None
+    slow = slabs.assign(_qs=slabs["numerics"].str.contains("quasi-static"))
+    return slow.sort_values(["_qs", "plate [m/s]", "sides"], ascending=[False, True, True]).iloc[0]
+
+
+def conjecture_paragraph(compared, frame, apple):
+    """The paper's conjecture answered in one paragraph, every number from this run's tables: the slab over
+    its cell, its modulus beside the cell's and the apple tissue's, and what a texture analyser would read."""
+    text = [conjecture_answer(compared)]
+    fresh = frame[np.isclose(frame["X/X0"], 1.0) & (frame["sides"] == "confined")
+                  & np.isclose(frame["compression L_p"], REAL_LP, rtol=1e-9, atol=0)]
+    slab, cell = fresh[fresh["cells"] > 1], fresh[fresh["cells"] == 1]
+    measured = [m for _, m in apple.values() if np.isfinite(m)]
+    apple_words = (f"the apple tissue's initial tangent modulus of {min(measured):.2f}-{max(measured):.2f} MPa"
+                   if measured else "no measured modulus")
+    if len(slab) and len(cell):
+        s, c = slab.iloc[0], cell.iloc[0]
+        text.append(f"Fresh, closed and confined ({s['numerics']}), the slab's modulus over its interior strain is "
+                    f"{s['modulus, gauge [MPa]']:.2f} MPa and over the plates' strain {s['modulus, nominal [MPa]']:.2f} "
+                    f"MPa, the single cell's {c['modulus, gauge [MPa]']:.2f} MPa, beside {apple_words}.")
+    near = texture_analyser_case(frame)
+    if near is not None:
+        ratio = [near["modulus, gauge [MPa]"] / m for m in measured]
+        text.append(f"A texture analyser presses drained tissue slowly; the closest case run here is the fresh slab "
+                    f"drained (compression L_p {near['compression L_p']:g}), {near['sides']}, {near['numerics']} at "
+                    f"{near['plate [m/s]']:g} m/s: {near['modulus, gauge [MPa]']:.2f} MPa over the interior strain"
+                    + (f", {min(ratio):.1f}-{max(ratio):.1f} times the apple tissue's" if ratio else "") + ".")
+    return " ".join(text)
+
+
+def study_list(config, target):
+    """The target's studies, each with its title and its number of cases, as an HTML list (from config)."""
+    items = []
+    for name, spec in config["studies"].items():
+        if matrix.target_of(config, name) != target:
+            continue
+        count = int(np.prod([len(v) for v in spec.get("vary", {}).values()]))
+        items.append(f"<li><code>{html.escape(name)}</code>: {html.escape(spec.get('title', name))} "
+                     f"({count} case{'s' if count != 1 else ''})</li>")
+    return "<ul>" + "".join(items) + "</ul>"
+
+
+def write_page(path, config, frame, figure_files, target="tissue", summary=None):
+    """The target's page: its studies, warnings, the tissue table, the slab against its cell, the moduli
+    beside the apple tissue's, the check against the SPH slab where it ran, the conjecture, the figures."""
     here = pathlib.Path(path).parent
-    parts = ["<h1>Tissues: cells bonded by a middle lamella, dried and compressed</h1>",
+    parts = [f"<h1>Tissues: cells bonded by a middle lamella, dried and compressed (target <code>{html.escape(target)}</code>)</h1>",
              "<p>The paper's future work (docs/model.md §10). Each tissue is built of the paper's baseline cell, "
              "faceted where it meets its neighbours and bonded to them through middle-lamella bonds that soften past "
              "a peak strength and separate for good once they have taken their fracture energy; every cell dries "
-             "by Eq 11 through its own wall. Two kinds of tissue: clusters (2 x 2 x 2, 3 x 3 x 3) between plates "
-             "wider than them, with free sides, and a slab periodic in x and y (2 x 2 cells to a period, 4 layers; "
-             "model.md §10b), whose period follows zero lateral stress as it dries and under the plates is held "
-             "(confined) or keeps following (unconfined). Two numerics: the paper's (LJ coupling, level 1; "
-             "its tissues' walls repel their fluid 3x harder than the single cell's), and the pressure coupling "
-             "at h0/dx 1.2, level 1 (the slab, a cluster and the single cell beside it, at the paper's 1 m/s; "
-             "the fresh slab at 4 m/s too), closed and drained (compression L_p 1e-6). Stress is the top-plate force over the footprint at the start of "
-             "compression (the outline of all walls seen from above; a slab's period), for every tissue and the "
-             "single cell alike; 'x single cell' is a tissue's stress or modulus over the single cell's of the same "
-             "numerics, dryness, plate speed and drainage. The gauge is the interior cells' strain "
-             "(model.md §10c). The tissue's volume is the convex hull of its walls, its porosity the part of that hull "
-             "outside every cell. Choices and their reasons: model closures, 'Tissue'.</p>"]
+             "by Eq 11 through its own wall. A slab is periodic in x and y (model.md §10b): its period follows "
+             "zero lateral stress as it dries and under the plates is held (confined) or keeps following "
+             "(unconfined). A closed cell (fluid.model = cavity) holds one uniform pressure, in the dynamic scheme "
+             "(the leapfrog, with the plate's rate) or the quasi-static one. This target's studies:</p>",
+             study_list(config, target),
+             "<p>Stress is the top-plate force over the footprint at the start of compression (the outline of all "
+             "walls seen from above; a slab's period), for every tissue and the single cell alike; 'x single cell' "
+             "is a tissue's stress or modulus over the single cell's of the same numerics, dryness, plate speed and "
+             "drainage. The gauge is the interior cells' strain (model.md §10c). The tissue's volume is the convex "
+             "hull of its walls, its porosity the part of that hull outside every cell. The energy columns: the "
+             "account's residual over the energy that flowed in drying and over the plate work in compression, and "
+             "the period's loss (its own term of the account). Choices and their reasons: model closures, "
+             "'Tissue'.</p>"]
+    if summary is not None:
+        parts.append(html_page.warnings_box(summary))
     parts.append("<h2>Tissues against the single cell</h2>")
     parts.append(html_page.frame_table(frame.drop(columns=["case"])))
+    references = sorted({n for f in matrix.target_figures(config, target)
+                         for n in config["figures"][f].get("references", [])})
+    compared = conjecture_table(frame, apple_stress_kPa(config, references))
+    if len(compared):
+        parts.append("<h2>The slab against its cell</h2>")
+        parts.append("<p>Each periodic slab beside the single cell of the same numerics, dryness, plate speed and "
+                     "drainage: its stress and its modulus over the interior strain over the cell's; 'x apple' is "
+                     "the fresh slab's stress over the fresh apple tissue's at the same nominal strain.</p>")
+        parts.append(html_page.frame_table(compared))
     moduli = modulus_table(frame)
+    apple = reference_moduli(config, references)
     if len(moduli):
         parts.append("<h2>Apparent modulus at small strain</h2>")
         parts.append("<p>The slope of stress (force over the footprint at compression start; a periodic slab's "
                      "footprint is its period) against strain, fitted over strains 0.01-0.05, in MPa: over the "
                      "plates' nominal strain / over the interior cells' strain (a tissue's gauge between the "
                      "centroid planes of its layers away from the plates, model.md §10c; one cell's nominal "
-                     "strain). Fresh apple tissue: initial tangent moduli 0.81-0.93 MPa (Chakespari et al., "
-                     "figure tis08 fits the reconstructed curves alike). Closed: compression L_p 1e-12; "
-                     "drained: 1e-6 (docs/model-closures.md, the drained bound).</p>")
+                     "strain). Closed: compression L_p 1e-12; drained: 1e-6 (docs/model-closures.md, the drained "
+                     "bound).</p>")
         parts.append(html_page.frame_table(moduli))
-    references = sorted({n for f in matrix.target_figures(config, target)
-                         for n in config["figures"][f].get("references", [])})
-    compared = conjecture_table(frame, apple_stress_kPa(config, references))
+        if apple:
+            rows = pd.DataFrame([{"fresh apple tissue": label, "reconstructed curve fitted alike [MPa]": fitted,
+                                  "initial tangent modulus, as published [MPa]": published}
+                                 for label, (fitted, published) in apple.items()])
+            parts.append(html_page.frame_table(rows))
+    checked = check_table(frame)
+    if len(checked):
+        parts.append("<h2>The closed cells against the SPH slab</h2>")
+        parts.append("<p>The same slab with the SPH fluid (pressure coupling): each other fluid's stresses and "
+                     "moduli, and their change from the SPH slab's.</p>")
+        parts.append(html_page.frame_table(checked))
     parts.append("<h2>The paper's conjecture: is a tissue less stiff than one cell?</h2>")
-    parts.append(f"<p>{html.escape(conjecture_answer(compared))} A ratio below 1 answers yes. 'x apple' is the "
-                 "fresh slab's stress over the fresh apple tissue's at the same nominal strain (the range over "
-                 f"{', '.join(html.escape(config['references'][n]['label']) for n in references) or 'no reference'}). "
-                 "What the numbers point to: docs/model-closures.md, 'The tissue study'.</p>")
-    if len(compared):
-        parts.append(html_page.frame_table(compared))
+    parts.append(f"<p>{html.escape(conjecture_paragraph(compared, frame, apple))} A ratio below 1 answers yes. "
+                 "What the numbers point to: docs/findings.md and docs/model-closures.md, 'The tissue study'.</p>")
     parts.append(html_page.figure_list(config, figure_files, here))
     html_page.write_page(path, f"cellsim {target}", parts)

@@ -229,7 +229,7 @@ def test_curves_figure_draws_one_line_per_case_and_the_references(config, root):
 
 def test_report_warns_of_every_case_whose_drying_hit_its_cap():
     import pandas as pd
-    from analysis.report import warnings_box
+    from analysis.html_page import warnings_box
     summary = pd.DataFrame({"case": ["A", "B", "C"],
                             "warning": ["", "drying reached drying.steps without a steady state", ""]})
     box = warnings_box(summary)

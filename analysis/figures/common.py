@@ -40,6 +40,8 @@ def moment_label(moment):
         return "end of drying"
     if moment == "end":
         return "end of compression"
+    if moment.startswith("strain_"):
+        return f"strain {moment.split('_')[1]}"
     return f"compression {int(moment.split('_')[1]) * 25}%"
 
 

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "engine/simulation.hpp"
 #include "geometry/tissue.hpp"
+#include "io/compression_summary.hpp"
+#include "io/drying_summary.hpp"
 #include "physics/eos.hpp"
 #include "physics/lennard_jones.hpp"
 #include "physics/plates.hpp"
@@ -152,4 +155,30 @@ TEST(EnergyAccount, ATissuesContactsAndMiddleLamellaAreInTheAccount) {
   EXPECT_LT(std::abs(pressed.energy_residual_J - rest.energy_residual_J), 0.01 * work)
       << "plate work " << work << " J, residual change " << pressed.energy_residual_J - rest.energy_residual_J;
   EXPECT_GT(std::abs(between), 0.05 * work) << "contact, lamella and its loss changed by " << between << " J";
+}
+
+// A stage whose residual passes kEnergyResidualTolerance of the energy through it is warned, naming its
+// share: a drying's over the magnitudes of its flows and losses, a compression's over the plate work.
+TEST(EnergyAccount, AStageWhoseResidualPassesTheToleranceIsWarnedWithItsShare) {
+  EnergyValues terms{};
+  terms[kDrive] = 3e-6;
+  terms[kPeriodLoss] = 1e-6;  // a loss counts by its magnitude too
+  EXPECT_DOUBLE_EQ(residual_over_flows(terms, -1e-7), -0.025);
+  EXPECT_TRUE(std::isnan(residual_over_flows(EnergyValues{}, 0.0)));  // nothing flowed: no share
+
+  DryingSummary drying;
+  drying.steady = true;
+  drying.energy_residual_share = -0.025;
+  EXPECT_NE(drying.warning().find("energy account: drying's residual is -2.5 % of the energy that flowed"),
+            std::string::npos) << drying.warning();
+  drying.energy_residual_share = 0.5 * kEnergyResidualTolerance;
+  EXPECT_EQ(drying.warning(), "");
+  drying.energy_residual_share = std::nan("");  // no drying ran
+  EXPECT_EQ(drying.warning(), "");
+
+  CompressionSummary compression{true, "compression.end_strain = 0.12", true, 1000, 0.12, 0.03};
+  EXPECT_EQ(compression.warning(), "energy account: compression's residual is 3 % of the plate work (tolerance 2 %)");
+  compression.reached = false;  // capped too: both, the cap first (the report sorts them by their start)
+  EXPECT_EQ(compression.warning().find("compression reached compression.steps = 1000"), 0u);
+  EXPECT_NE(compression.warning().find("; energy account: compression's residual is 3 %"), std::string::npos);
 }

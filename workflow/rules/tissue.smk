@@ -1,37 +1,72 @@
-# The tissue studies (config: studies with `target: tissue`, model.md §10): their runs, tables, figures
-# and page, built by `snakemake --cores 2 tissue`, never by the default target. Their single cells are
-# the paper's baseline cases, shared with the default target.
-TISSUE_CASES = matrix.target_cases(config, CASES, "tissue")
-TISSUE_FIGURES = matrix.target_figures(config, "tissue")
+# The tissue targets (config: studies with a `target` below, model.md §10), never built by the default
+# target: each has its runs, tables, figures and page (results/report/<target>.html).
+#   tissue         the closed-cell slab, its single cell and the bounds that fit the hour
+#   tissue_bounds  the bound that does not: the quasi-static limit
+#   tissue_clusters clusters of 8 and 27 closed cells with free sides
+#   tissue_check   the SPH slab beside the closed cells (the check of the closed cells)
+#   tissue_large   large slabs for a cluster (workflow/profiles/slurm)
+TISSUE_TARGETS = ["tissue", "tissue_bounds", "tissue_clusters", "tissue_check", "tissue_large"]
+TISSUE_CASES = {t: matrix.target_cases(config, CASES, t) for t in TISSUE_TARGETS}
+TISSUE_FIGURES = {t: matrix.target_figures(config, t) for t in TISSUE_TARGETS}
+
+
+def tissue_target_inputs(target):
+    return {
+        "figures": expand(f"{OUT}/figures/{{fig}}.{{ext}}", fig=TISSUE_FIGURES[target], ext=["png", "pdf"]),
+        "page": f"{OUT}/report/{target}.html",
+        "cells": expand(f"{OUT}/report/cells/{{case}}.html", case=TISSUE_CASES[target]),
+        "js": [f"{OUT}/report/js/three.min.js", f"{OUT}/report/js/OrbitControls.js"],
+    }
 
 
 rule tissue:
     input:
-        figures=expand(f"{OUT}/figures/{{fig}}.{{ext}}", fig=TISSUE_FIGURES, ext=["png", "pdf"]),
-        page=f"{OUT}/report/tissue.html",
-        cells=expand(f"{OUT}/report/cells/{{case}}.html", case=TISSUE_CASES),
-        js=[f"{OUT}/report/js/three.min.js", f"{OUT}/report/js/OrbitControls.js"],
+        **tissue_target_inputs("tissue"),
+
+
+rule tissue_bounds:
+    input:
+        **tissue_target_inputs("tissue_bounds"),
+
+
+rule tissue_clusters:
+    input:
+        **tissue_target_inputs("tissue_clusters"),
+
+
+rule tissue_check:
+    input:
+        **tissue_target_inputs("tissue_check"),
+
+
+rule tissue_large:
+    input:
+        **tissue_target_inputs("tissue_large"),
 
 
 rule aggregate_tissue:
     input:
-        runs=[run_file(c) for c in TISSUE_CASES],
+        runs=lambda w: [run_file(c) for c in TISSUE_CASES[w.target]],
     output:
-        timeseries=f"{OUT}/tables/tissue/timeseries.csv",
-        summary=f"{OUT}/tables/tissue/summary.csv",
+        timeseries=f"{OUT}/tables/{{target}}/timeseries.csv",
+        summary=f"{OUT}/tables/{{target}}/summary.csv",
+    wildcard_constraints:
+        target="|".join(TISSUE_TARGETS),
     script:
         "../scripts/aggregate.py"
 
 
 rule tissue_page:
     input:
-        summary=f"{OUT}/tables/tissue/summary.csv",
-        timeseries=f"{OUT}/tables/tissue/timeseries.csv",
-        runs=[run_file(c) for c in TISSUE_CASES],
-        figures=expand(f"{OUT}/figures/{{fig}}.png", fig=TISSUE_FIGURES),
+        summary=f"{OUT}/tables/{{target}}/summary.csv",
+        timeseries=f"{OUT}/tables/{{target}}/timeseries.csv",
+        runs=lambda w: [run_file(c) for c in TISSUE_CASES[w.target]],
+        figures=lambda w: expand(f"{OUT}/figures/{{fig}}.png", fig=TISSUE_FIGURES[w.target]),
         code="analysis/tissue.py",
     output:
-        html=f"{OUT}/report/tissue.html",
-        table=f"{OUT}/tables/tissue/tissue.csv",
+        html=f"{OUT}/report/{{target}}.html",
+        table=f"{OUT}/tables/{{target}}/tissue.csv",
+    wildcard_constraints:
+        target="|".join(TISSUE_TARGETS),
     script:
         "../scripts/tissue.py"

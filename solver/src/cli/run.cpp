@@ -173,15 +173,21 @@ void run_case(const Params& p, const RunOptions& options) {
                      drying.steady_time_s * 1e6, static_cast<long long>(sim.state().step));
     }
     drying.dried = drying_steps > 0 || (!options.from_path.empty() && !from_rest);
-    if (drying_steps > 0 || options.from_path.empty())  // else carried from the saved run
+    if (drying_steps > 0 || options.from_path.empty()) {  // else carried from the saved run
       drying.volumetric_modulus_Pa = volumetric_modulus_Pa(sim);
+      if (drying_steps > 0)
+        drying.energy_residual_share = residual_over_flows(records.back().energy, records.back().energy_residual_J);
+    }
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
     if (compression_steps > 0) {
+      const Record dried = records.back();
       sim.start_compression();
       if (p.end_strain && !p.unload_at_strain) progress.aim("strain", *p.end_strain);
       run_stage(sim, step, compression_steps, strain_reached, out, records, progress, "compression",
                 [&] { return sim.nominal_strain(); });
-      compression = {true, asked_end(p), strain_reached(nullptr), compression_steps, sim.nominal_strain()};
+      const double work_J = records.back().energy[kPlateWork] - dried.energy[kPlateWork];
+      compression = {true, asked_end(p), strain_reached(nullptr), compression_steps, sim.nominal_strain(),
+                     work_J != 0 ? (records.back().energy_residual_J - dried.energy_residual_J) / work_J : std::nan("")};
       if (!compression.warning().empty())
         std::fprintf(stderr, "cellsim: WARNING: %s\n", compression.warning().c_str());
     }

@@ -22,7 +22,7 @@ enum class EnergySource { State, Power, DensityPower, Jump };
 enum EnergyTermId : std::size_t {
   kKinetic, kInternal, kWallStiff, kWallContraction, kWallBending, kCouplingPotential, kPlateSprings, kContact,
   kLamella, kPlateWork, kViscousLoss, kDampingLoss, kMassTransfer, kPressureClosure, kDrive, kDensityDiffusion,
-  kBackstopWork, kVolumeClosure, kPlasticLoss, kLamellaLoss, kRelaxationLoss, kEnergyTermCount
+  kBackstopWork, kVolumeClosure, kPlasticLoss, kLamellaLoss, kRelaxationLoss, kPeriodLoss, kEnergyTermCount
 };
 
 struct EnergyTerm {
@@ -87,7 +87,17 @@ inline constexpr std::array<EnergyTerm, kEnergyTermCount> kEnergyTerms{{
      "energy the quasi-static relaxations released since t = 0 beyond the loads' work (time.scheme = quasi_static: "
      "the trapezoid of the plate's force over its travel and of the drying ramp's power): the snaps of a wall that "
      "folds, and the trapezoid's error, which shrinks as dt^2; 0 for a dynamic run"},
+    {kPeriodLoss, "period_loss_J", "energy_period_loss_J", EnergyRole::Loss, EnergySource::Jump, "period loss",
+     "energy a periodic slab's period took as it followed zero lateral stress since t = 0 (the dynamic scheme's "
+     "viscous follower, model.md §10b: minus the lateral stress times the slab's face area over the period's "
+     "travel, sigma^2 L_x L_y H dt / eta_p a step); 0 for a held period, a cluster or one cell, and in the "
+     "quasi-static scheme, whose period moves within its relaxations"},
 }};
+
+// A stage's account closes while its residual stays within this share of the energy that went through it:
+// a drying's flows and losses from t = 0 (their magnitudes summed), a compression's plate work. Past it the
+// run's warning says so (io/drying_summary.hpp, io/compression_summary.hpp).
+constexpr double kEnergyResidualTolerance = 0.02;  // the LJ coupling's compressions leave up to 1.6 %
 
 // One value per term, indexed by EnergyTermId.
 using EnergyValues = std::array<double, kEnergyTermCount>;

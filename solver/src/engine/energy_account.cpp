@@ -1,5 +1,7 @@
 #include "engine/energy_account.hpp"
 
+#include <cmath>
+
 namespace cellsim {
 
 EnergyValues energy_terms(const State& s, const EnergyModel& model) {
@@ -44,6 +46,13 @@ double energy_residual_J(const EnergyValues& terms, double initial_J) {
   for (const EnergyTerm& term : kEnergyTerms)
     if (term.role != EnergyRole::Stored) put_in += residual_sign(term.role) * terms[term.id];
   return stored_energy_J(terms) - initial_J - put_in;
+}
+
+double residual_over_flows(const EnergyValues& terms, double residual_J) {
+  double flowed = 0;
+  for (const EnergyTerm& term : kEnergyTerms)
+    if (term.role != EnergyRole::Stored) flowed += std::abs(terms[term.id]);
+  return flowed > 0 ? residual_J / flowed : std::nan("");
 }
 
 }  // namespace cellsim

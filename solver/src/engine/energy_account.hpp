@@ -56,4 +56,7 @@ double drive_power_W(double stored_energy_per_turgor_m3, double turgor_rate_Pa_s
 // table: zero for an exact integration of the model.
 double energy_residual_J(const EnergyValues& terms, double initial_J);
 
+// The residual over the magnitudes of every flow and loss since t = 0 (NaN when nothing flowed).
+double residual_over_flows(const EnergyValues& terms, double residual_J);
+
 }  // namespace cellsim

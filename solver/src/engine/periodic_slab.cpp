@@ -11,9 +11,10 @@ Eigen::Vector2d lateral_stress_Pa(const Eigen::Vector2d& period_virial_J, const 
   return -period_virial_J / (box.area_m2() * height_m);
 }
 
-double follow_lateral_stress(State& s, const CellRanges& cells, double period_viscosity_Pa_s, double dt) {
-  const Eigen::Vector2d strain(-s.lateral_stress_x_Pa / period_viscosity_Pa_s * dt,
-                               -s.lateral_stress_y_Pa / period_viscosity_Pa_s * dt);
+double follow_lateral_stress(State& s, const CellRanges& cells, double period_viscosity_Pa_s, double dt,
+                             double height_m) {
+  const Eigen::Vector2d stress(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa);
+  const Eigen::Vector2d strain = -stress / period_viscosity_Pa_s * dt;
   if (strain.cwiseAbs().maxCoeff() > kLargestPeriodStrainPerStep) {  // a period that jumps would tear the slab
     std::ostringstream msg;
     msg << "the period would strain by " << strain.cwiseAbs().maxCoeff() << " in one step (lateral stress "
@@ -21,6 +22,9 @@ double follow_lateral_stress(State& s, const CellRanges& cells, double period_vi
         << " kPa); raise tissue.period_viscosity_Pa_s (now " << period_viscosity_Pa_s << ")";
     throw NumericalFailure(msg.str());
   }
+  // The cells move whole, so only the pairs between them change energy: by the virial's work, -W . strain =
+  // sigma . strain L_x L_y H (the stress's own definition), which the follower dissipates.
+  s.energy.integral[kPeriodLoss] -= stress.dot(strain) * s.box.area_m2() * height_m;
   return strain_period(s, cells, strain);
 }
 

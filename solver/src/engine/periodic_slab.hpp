@@ -22,10 +22,12 @@ constexpr double kLargestPeriodStrainPerStep = 1e-3;
 double strain_period(State& s, const CellRanges& cells, const Eigen::Vector2d& strain);
 
 // One step of the period following zero lateral stress: it strains by -sigma dt / eta_p along x and y,
-// and every cell's particles move as its centroid maps (shapes and velocities kept). Throws
+// and every cell's particles move as its centroid maps (shapes and velocities kept); the energy the
+// follower takes, sigma^2 L_x L_y H dt / eta_p for a slab of height H, joins the account's period loss. Throws
 // NumericalFailure if the period would strain more than kLargestPeriodStrainPerStep.
 // Returns how far a pair of particles can have moved apart as the lists see it (the cells' moves and,
 // for a pair across the period, the period's change).
-double follow_lateral_stress(State& s, const CellRanges& cells, double period_viscosity_Pa_s, double dt);
+double follow_lateral_stress(State& s, const CellRanges& cells, double period_viscosity_Pa_s, double dt,
+                             double height_m);
 
 }  // namespace cellsim

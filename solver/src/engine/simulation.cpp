@@ -281,7 +281,8 @@ void Simulation::cell_contact_terms() {
 void Simulation::follow_lateral_stress(double dt) {
   if (!period_follows()) return;
   try {
-    moved_since_lists_m_ += cellsim::follow_lateral_stress(s_, cells_, p_.period_viscosity_Pa_s, dt);
+    moved_since_lists_m_ +=
+        cellsim::follow_lateral_stress(s_, cells_, p_.period_viscosity_Pa_s, dt, cell_height_m(s_.wall.x));
   } catch (const NumericalFailure& e) {
     throw NumericalFailure(where() + ": " + e.what());
   }

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <string>
 
+#include "core/energy_terms.hpp"
+
 namespace cellsim {
 
 struct CompressionSummary {
@@ -16,15 +18,21 @@ struct CompressionSummary {
   bool reached = true;       // it ended there, not at its cap
   std::int64_t cap_steps = 0;  // compression.steps
   double strain = std::nan("");  // nominal strain when it ended
+  // The energy account's residual gathered over the compression, over the plate work (NaN without work);
+  // past kEnergyResidualTolerance the warning says the account is open.
+  double energy_residual_share = std::nan("");
 
   // 1 reached its end, 0 stopped at its cap before it, -1 no end asked (or no compression).
   std::int64_t reached_code() const { return !ran || asked.empty() ? -1 : reached ? 1 : 0; }
 
   std::string warning() const {
-    if (reached_code() != 0) return "";
     std::ostringstream w;
-    w << "compression reached compression.steps = " << cap_steps << " at nominal strain " << strain << " before "
-      << asked;
+    if (reached_code() == 0)
+      w << "compression reached compression.steps = " << cap_steps << " at nominal strain " << strain << " before "
+        << asked;
+    if (std::abs(energy_residual_share) > kEnergyResidualTolerance)
+      w << (reached_code() == 0 ? "; " : "") << "energy account: compression's residual is "
+        << 100 * energy_residual_share << " % of the plate work (tolerance " << 100 * kEnergyResidualTolerance << " %)";
     return w.str();
   }
 };

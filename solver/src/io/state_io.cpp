@@ -34,6 +34,8 @@ void write_run_summary(hid_t parent, const DryingSummary& d, const CompressionSu
   h5::set_attr(parent, "drying_steady", std::int64_t{d.steady});
   h5::set_attr(parent, "drying_steady_time_s", d.steady_time_s);
   h5::set_attr(parent, "volumetric_modulus_Pa", d.volumetric_modulus_Pa);
+  h5::set_attr(parent, "drying_energy_residual_share", d.energy_residual_share);
+  h5::set_attr(parent, "compression_energy_residual_share", c.energy_residual_share);
   h5::set_attr(parent, "compression_reached_end", c.reached_code());
   h5::set_attr(parent, "compression_end_strain", c.strain);
   const std::string joined = d.warning() + (d.warning().empty() || c.warning().empty() ? "" : "; ") + c.warning();
@@ -97,6 +99,8 @@ SavedRun read_saved_run(const std::string& path) {
     d.steady_time_s = h5::get_attr_double(file.id(), "drying_steady_time_s");
     if (h5::has_attr(file.id(), "volumetric_modulus_Pa"))  // written before issue 46: none
       d.volumetric_modulus_Pa = h5::get_attr_double(file.id(), "volumetric_modulus_Pa");
+    if (h5::has_attr(file.id(), "drying_energy_residual_share"))  // written before issue 67: none
+      d.energy_residual_share = h5::get_attr_double(file.id(), "drying_energy_residual_share");
     h5::Handle g = h5::open_group(file.id(), "state");
     State& s = run.state;
     s.time_s = h5::get_attr_double(g.id(), "time_s");
