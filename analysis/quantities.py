@@ -67,6 +67,7 @@ QUANTITIES = {
     "plastic_loss_J": ("dissipated by the wall's plastic flow [nJ]", 1e9),
     "lamella_loss_J": ("dissipated by the middle lamella [nJ]", 1e9),
     "relaxation_loss_J": ("dissipated by the quasi-static relaxation [nJ]", 1e9),
+    "period_loss_J": ("dissipated by a periodic slab's period as it follows [nJ]", 1e9),
     "wall_plastic_strain_mean": ("mean plastic strain of the wall's bonds", 1.0),
     "wall_plastic_strain_max": ("largest plastic strain of a wall bond", 1.0),
     "energy_residual_J": ("energy residual [nJ]", 1e9),

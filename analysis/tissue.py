@@ -256,9 +256,9 @@ def conjecture_paragraph(compared, frame, apple):
     """The paper's conjecture answered in one paragraph, every number from this run's tables: the slab over
     its cell, its modulus beside the cell's and the apple tissue's, and what a texture analyser would read."""
     text = [conjecture_answer(compared)]
-    fresh = frame[np.isclose(frame["X/X0"], 1.0) & (frame["sides"] == "confined")
-                  & np.isclose(frame["compression L_p"], REAL_LP, rtol=1e-9, atol=0)]
-    slab, cell = fresh[fresh["cells"] > 1], fresh[fresh["cells"] == 1]
+    fresh = frame[np.isclose(frame["X/X0"], 1.0) & np.isclose(frame["compression L_p"], REAL_LP, rtol=1e-9, atol=0)]
+    slab = fresh[(fresh["cells"] > 1) & (fresh["sides"] == "confined")]
+    cell = fresh[(fresh["cells"] == 1) & fresh["numerics"].isin(slab["numerics"].iloc[:1])]
     measured = [m for _, m in apple.values() if np.isfinite(m)]
     apple_words = (f"the apple tissue's initial tangent modulus of {min(measured):.2f}-{max(measured):.2f} MPa"
                    if measured else "no measured modulus")
@@ -269,11 +269,16 @@ def conjecture_paragraph(compared, frame, apple):
                     f"MPa, the single cell's {c['modulus, gauge [MPa]']:.2f} MPa, beside {apple_words}.")
     near = texture_analyser_case(frame)
     if near is not None:
-        ratio = [near["modulus, gauge [MPa]"] / m for m in measured]
+        def times_apple(modulus):
+            ratio = [modulus / m for m in measured]
+            return f" ({min(ratio):.1f}-{max(ratio):.1f} times the apple tissue's)" if ratio else ""
         text.append(f"A texture analyser presses drained tissue slowly; the closest case run here is the fresh slab "
                     f"drained (compression L_p {near['compression L_p']:g}), {near['sides']}, {near['numerics']} at "
-                    f"{near['plate [m/s]']:g} m/s: {near['modulus, gauge [MPa]']:.2f} MPa over the interior strain"
-                    + (f", {min(ratio):.1f}-{max(ratio):.1f} times the apple tissue's" if ratio else "") + ".")
+                    f"{near['plate [m/s]']:g} m/s: its modulus is {near['modulus, nominal [MPa]']:.2f} MPa over the "
+                    f"plates' strain{times_apple(near['modulus, nominal [MPa]'])} and "
+                    f"{near['modulus, gauge [MPa]']:.2f} MPa over the interior strain"
+                    f"{times_apple(near['modulus, gauge [MPa]'])}, whose gauge reads {near['gauge at nominal 0.10']:.3f} "
+                    "at nominal strain 0.10 (a drained slab yields at a plateau: the interior fit then spans it).")
     return " ".join(text)
 
 
