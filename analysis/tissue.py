@@ -10,6 +10,7 @@ import pandas as pd
 
 from analysis import html_page, matrix
 from analysis.bounds import REAL_LP  # a closed cell's compression L_p; any other drains it
+from analysis.figures.modulus import reference_modulus_MPa  # the fit the figures draw
 from analysis.references import load as load_reference
 from analysis.results import open_result
 
@@ -214,7 +215,7 @@ def conjecture_answer(compared):
 def reference_moduli(config, names, root="."):
     """{label: (the reconstructed curve's modulus fitted as the runs' are [MPa], the source's initial tangent
     modulus [MPa] or NaN)} of the apple references."""
-    from analysis.figures.modulus import reference_modulus_MPa  # the fit the figures draw
+
     return {config["references"][n]["label"]: (reference_modulus_MPa(config, n, root),
                                                config["references"][n].get("initial_modulus_MPa", np.nan))
             for n in names}
