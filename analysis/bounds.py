@@ -1,14 +1,17 @@
-"""The rate and drainage bounds (config/converged.yaml, studies rate_bounds and drainage): how far the
-paper's 1 m/s curves are from the quasi-static limit, how much stiffer a closed cell is than one that
-lets water out while it is pressed, and which curve a texture-analyser experiment should be compared
-with. Stresses are the smoothed ones (the mean over +-0.01 strain, analysis/aggregate.py)."""
+"""The rate and drainage bounds (config/converged.yaml, target converged_bounds: studies rate_bounds,
+drainage and their slow end, bounds_slow_end): how far the paper's 1 m/s curves are from the quasi-static
+limit, how much stiffer a closed cell is than one that lets water out while it is pressed, and which curve
+a texture-analyser experiment should be compared with; and the texture analyser's own study (the report).
+Stresses are the smoothed ones (the mean over +-0.01 strain, analysis/aggregate.py)."""
 import html
+import pathlib
 
 import numpy as np
 import pandas as pd
 
 from analysis.aggregate import rows_of
-from analysis.html_page import frame_table
+from analysis import html_page, references
+from analysis.html_page import figure_list, frame_table
 from analysis.matrix import case_default
 
 STRAINS = (0.05, 0.10)
@@ -140,3 +143,73 @@ def section(config, summary):
         parts += ["<h3>Drained compression (study drainage)</h3>", frame_table(drained)]
     parts += ["<h3>Which curve to compare with a texture analyser</h3>", verdict_text(quasi_static, drained)]
     return "".join(parts)
+
+
+def slow_end(summary, drained):
+    """The quasi-static closed cell's stresses at STRAINS per dryness (study bounds_slow_end), closed or
+    drained (compression L_p 1e-6): the bounds' slow end."""
+    rows = rows_of(summary, "bounds_slow_end")
+    rows = rows[np.isclose(rows[LP], 1e-6) == drained]
+    return {float(r["dryness"]): [stress(r, e) for e in STRAINS] for _, r in rows.iterrows()}
+
+
+def slow_end_table(summary):
+    """Per dryness: the quasi-static closed cell, closed and drained, at STRAINS [kPa]."""
+    closed, drained = slow_end(summary, False), slow_end(summary, True)
+    out = []
+    for x in sorted(set(closed) | set(drained), reverse=True):
+        entry = {"X/X0": x}
+        for name, values in (("closed", closed), ("drained (L_p 1e-6)", drained)):
+            for k, e in enumerate(STRAINS):
+                entry[f"quasi-static, {name}, at {e:.2f} [kPa]"] = values[x][k] if x in values else np.nan
+        out.append(entry)
+    return pd.DataFrame(out)
+
+
+def write_page(path, config, summary, figure_files):
+    """The converged_bounds target's page: the two bounds' tables, their quasi-static slow end, which
+    curve a texture analyser should be compared with, and the figures."""
+    here = pathlib.Path(path).parent
+    parts = [section(config, summary)]
+    slow = slow_end_table(summary)
+    if not slow.empty:
+        parts += ["<h3>Their slow end: the closed cell, quasi-static (study bounds_slow_end)</h3>",
+                  "<p>One uniform pressure per cell at equilibrium at every plate step (K 20 MPa, the SPH cells'): "
+                  "what the rate study's curves tend to as the plate slows, closed and drained.</p>", frame_table(slow)]
+    parts.append(figure_list(config, figure_files, here))
+    html_page.write_page(path, "cellsim: rate and drainage bounds", parts)
+
+
+TEXTURE_STUDY = "texture_analyser"
+
+
+def texture_table(config, summary, root="."):
+    """The texture analyser's study (slow and drained: the closed cell quasi-static at water's K, L_p 1e-6)
+    per wall and dryness, beside the apple references of its figure: stresses at STRAINS [kPa] and the
+    apparent modulus over strains 0.01-0.05 [MPa]."""
+    rows = rows_of(summary, TEXTURE_STUDY)
+    out = [{"case": f"{r['wall_bending']} wall, X/X0 = {r['dryness']:g}",
+            **{f"stress at {e:.2f} [kPa]": stress(r, e) for e in STRAINS},
+            "modulus 0.01-0.05 [MPa]": r.get("modulus_MPa_nominal", np.nan)}
+           for _, r in rows.sort_values(["wall_bending", "dryness"], ascending=[True, False]).iterrows()]
+    figures = [spec for spec in config["figures"].values() if spec["study"] == TEXTURE_STUDY]
+    for name in (figures[0].get("references", []) if figures else []):
+        ref = config["references"][name]
+        strain, stress_kPa = references.load(ref, root)
+        out.append({"case": ref["label"], **{f"stress at {e:.2f} [kPa]": float(np.interp(e, strain, stress_kPa))
+                                            for e in STRAINS},
+                    "modulus 0.01-0.05 [MPa]": ref.get("initial_modulus_MPa", np.nan)})
+    return pd.DataFrame(out)
+
+
+def texture_section(config, summary, root="."):
+    """The report's section for a user with a texture analyser, or "" without the study."""
+    if TEXTURE_STUDY not in config["studies"] or rows_of(summary, TEXTURE_STUDY).empty:
+        return ""
+    return ("<h2>For a texture analyser: slow and drained (study texture_analyser)</h2>"
+            "<p>A texture analyser presses tissue over seconds, so its cells are at equilibrium and let water out "
+            "(docs/model-closures.md, 'Which curve stands for a texture-analyser test'). These cases are that limit: "
+            "the closed cell quasi-static at water's K, its compression L_p 1e-6 (a million times the paper's), the "
+            "paper's wall and the wall that bends like its 6 um, fresh and dried. Beside them the apple tissue "
+            "references of their figure. A single cell between plates is not tissue (the tissue page): read the "
+            "difference as a bound, not as a fit.</p>" + frame_table(texture_table(config, summary, root)))

@@ -15,6 +15,8 @@ import numpy as np
 from analysis.aggregate import SMOOTH_STRAIN, loading_branch, window_mean
 
 STRAIN = 0.05  # the strain of the point values kept beside the curve verdicts
+# The paper's six axes, which the claims' cases vary; every other axis tells one configuration from another.
+PAPER_AXES = ("dryness", "turgor_kPa", "plate_speed_m_s", "G_MPa", "t0_um", "D_um")
 STRESS = f"stress_kPa_at_{STRAIN:.2f}"
 GRID_STEP = 0.005
 START_STRAIN = 0.02  # curves are compared from here on: below it the plates are still making contact

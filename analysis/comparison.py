@@ -8,6 +8,7 @@ import os
 import numpy as np
 import pandas as pd
 
+from analysis import provenance
 from analysis.html_page import cell_text
 
 
@@ -25,6 +26,33 @@ def other_claims_file(config):
     return f"{spec[0]}/tables/claims.csv" if spec else None
 
 
+def other_made_by(config):
+    """(the other run's recorded version and commit, or None, and whether it is not this checkout's):
+    its tables/provenance.json against this code's (analysis/provenance.py)."""
+    spec = other(config)
+    made = provenance.read(f"{spec[0]}/tables/provenance.json") if spec else None
+    return made, made != provenance.record()
+
+
+def made_by_note(config):
+    """A warning on the page where the other run's folder is missing, has no record of the code that made
+    it, or was made by other code than this run's: which run, which version and commit."""
+    spec = other(config)
+    if not spec or not os.path.exists(other_claims_file(config)):
+        return ""
+    made, differs = other_made_by(config)
+    if not differs:
+        return ""
+    this = provenance.line()
+    if made is None:
+        what = "has no record of the code that made it (no tables/provenance.json: made before 0.3.0)"
+    else:
+        what = f"was made by cellsim {made['version']}, commit {made['commit']}"
+    return (f"<div class='warning'><b>The {html.escape(spec[1])} in <code>{html.escape(spec[0])}</code> {html.escape(what)}"
+            f"</b>, this run by {html.escape(this)}. Its claims and its dashed curves below are that run's: "
+            f"run <code>snakemake --cores 2</code> again with this checkout to compare like with like.</div>")
+
+
 def overlaid(config, fig):
     """Whether the figure draws the other run's curves (dashed) beside this run's."""
     return bool(config.get(KEY)) and fig in config[KEY].get("figures", [])
@@ -37,6 +65,18 @@ def other_runs(config, names):
         return {}
     paths = {n: f"{spec[0]}/runs/{n}.h5" for n in names}
     return {n: p for n, p in paths.items() if os.path.exists(p)}
+
+
+def missing_note(config):
+    """The page's word where the other run's claims are not there: which folder, and how to make it."""
+    path = other_claims_file(config)
+    if not path or os.path.exists(path):
+        return ""
+    _, other_label, _ = other(config)
+    return (f"<div class='warning'><b>The {html.escape(other_label)} has not been run</b> (no <code>"
+            f"{html.escape(path)}</code>): run <code>snakemake --cores 2</code> and then this target again to "
+            f"see every claim under both configurations side by side; its column and its dashed curves are "
+            f"left out until then.</div>")
 
 
 def side_by_side(rows, other_rows):
@@ -71,9 +111,7 @@ def section(config, rows):
     out_dir, other_label, this_label = other(config)
     other_rows = read_other_claims(other_claims_file(config))
     if other_rows is None:
-        return (f"<p><b>The {html.escape(other_label)} has not been run</b> (no <code>"
-                f"{html.escape(other_claims_file(config))}</code>): run <code>snakemake --cores 2</code> and then "
-                f"this target again to see every claim under both configurations side by side.</p>")
+        return missing_note(config)
     table = side_by_side(rows, other_rows)
     head = ("<table><tr><th>paper's claim</th><th>fig</th><th>measured</th><th>agree if</th>"
             f"<th>{html.escape(other_label)}: value</th><th>verdict</th>"

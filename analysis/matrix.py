@@ -105,6 +105,11 @@ def target_of(config, study):
     return config["studies"][study].get("target", DEFAULT_TARGET)
 
 
+def targets(config):
+    """The targets other than the default that the config's studies name, in order."""
+    return sorted({target_of(config, s) for s in config["studies"]} - {DEFAULT_TARGET})
+
+
 def target_cases(config, cases, target=DEFAULT_TARGET):
     """Names of the cases a target runs: those of its studies."""
     studies = {s for s in config["studies"] if target_of(config, s) == target}
@@ -321,28 +326,35 @@ def rest_name(config, values):
                     and _named(config, values, axis, spec)) or "base"
 
 
+def build(config, values, schema=None):
+    """(the cellsim case, its axis values) of these axis values over base: each axis's key set, then the
+    coupled keys of every value (in the axes' order), then the schema's defaults; an axis whose key a
+    coupled value set reads that value back (the closed cell's dt_ns is its 100 ns)."""
+    axes = config["axes"]
+    values = dict(values)
+    case = copy.deepcopy(config["base"])
+    for axis, value in values.items():
+        if "key" in axes[axis]:
+            set_key(case, axes[axis]["key"], value)
+    for axis, value in values.items():
+        for key, coupled in axes[axis].get("coupled", {}).get(fmt(value), {}).items():
+            set_key(case, key, coupled)
+    with_defaults(case, schema or case_schema())
+    for axis, axis_spec in axes.items():
+        if "key" in axis_spec and hides_base_value(axis_spec):
+            values[axis] = get_key(case, axis_spec["key"])
+    return case, values
+
+
 def expand(config):
     """All cases of all studies, deduplicated: {name: Case}, in a stable order."""
-    axes, base = config["axes"], config["base"]
-    base_values = {axis: base_value(config, axis) for axis in axes}
+    base_values = {axis: base_value(config, axis) for axis in config["axes"]}
     schema = case_schema()
     cases = {}
     for study, spec in config["studies"].items():
         varied = list(spec["vary"])
         for combo in itertools.product(*(spec["vary"][a] for a in varied)):
-            values = dict(base_values)
-            values.update(dict(zip(varied, combo)))
-            case = copy.deepcopy(base)
-            for axis, value in values.items():
-                if "key" in axes[axis]:
-                    set_key(case, axes[axis]["key"], value)
-            for axis, value in values.items():
-                for key, coupled in axes[axis].get("coupled", {}).get(fmt(value), {}).items():
-                    set_key(case, key, coupled)
-            with_defaults(case, schema)
-            for axis, axis_spec in axes.items():
-                if "key" in axis_spec and hides_base_value(axis_spec):
-                    values[axis] = get_key(case, axis_spec["key"])
+            case, values = build(config, {**base_values, **dict(zip(varied, combo))}, schema)
             name = case_name(config, values)
             if name not in cases:
                 cases[name] = Case(name, dried_name(config, values), rest_name(config, values), values, case)

@@ -8,7 +8,7 @@ import pathlib
 
 import markdown
 
-from analysis import bounds, comparison, findings
+from analysis import bounds, columns, comparison, findings
 from analysis.claims import METHOD
 from analysis.html_page import cell_text, energy_box, warnings_box, write_page
 from analysis.matrix import figure_cases, figure_studies
@@ -64,8 +64,9 @@ def matrix_table(summary, axes, cell_links=None):
     return f"<div class='wide'><table><tr>{head}</tr>{''.join(body)}</table></div>"  # scrolls in its own box
 
 
-def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=()):
-    """cell_pages: the cases' 3-D pages (analysis/cell_view.py), linked from the run matrix."""
+def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=(), column_rows=None):
+    """cell_pages: the cases' 3-D pages (analysis/cell_view.py), linked from the run matrix; column_rows:
+    this run's claim columns (analysis/columns.py), set beside the other run's claims where given."""
     root = pathlib.Path(root)
     here = pathlib.Path(path).parent
     cell_links = {pathlib.Path(p).stem: os.path.relpath(p, here) for p in cell_pages}
@@ -76,14 +77,22 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
         other_dir, other_label, this_label = comparison.other(config)
         parts.append(f"<p class='meta'>This run: the <b>{html.escape(this_label)}</b>, beside the "
                      f"{html.escape(other_label)} (<code>{html.escape(other_dir)}</code>).</p>")
+        parts.append(comparison.made_by_note(config))
     parts.append(warnings_box(summary))
     parts.append(energy_box(summary))
     parts.append(findings.section(config, summary, claim_rows, root))
     parts.append("<h2>The paper's claims and this run</h2>")
     parts.append(claims_table(claim_rows))
-    if comparison.other(config):
+    if column_rows and comparison.other(config):
+        other_dir, other_label, _ = comparison.other(config)
+        parts.append(f"<h2>The claims judged {1 + len(column_rows)} ways</h2>"
+                     + comparison.missing_note(config)
+                     + columns.section(config, column_rows, comparison.read_other_claims(comparison.other_claims_file(config)),
+                                       other_label))
+    elif comparison.other(config):
         parts.append(f"<h2>The claims under both configurations</h2>{comparison.section(config, claim_rows)}")
     parts.append(bounds.section(config, summary))
+    parts.append(bounds.texture_section(config, summary, root))
     parts.append("<h2>Figures</h2>")
     for fig, png in figure_files.items():
         rel = os.path.relpath(png, here)

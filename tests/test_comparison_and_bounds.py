@@ -91,16 +91,23 @@ def test_an_overlaid_figure_draws_the_other_runs_curve_of_each_case_dashed_in_it
     def series(factor):
         return pd.DataFrame([{"case": f"X{x}", "dryness": x, "stage": 1, "time_s": e, "nominal_strain": e,
                               "plate_stress_Pa": factor * x * e * 1e6} for x in (1.0, 0.5) for e in strain])
-    figure = curves.draw(config, "f", series(1.0), root, overlay=(series(0.5), "paper's", "converged"))
+    band = {"X1.0": (strain[5:], 0.9 * 1e3 * strain[5:], 1.1 * 1e3 * strain[5:])}
+    overlay = {"this": "converged", "lines": [(series(0.5), "paper's", "--"), (series(0.25), "closed cell", ":")],
+               "band": band, "band_label": "shaded: its band"}
+    figure = curves.draw(config, "f", series(1.0), root, overlay=overlay)
     ax = figure.axes[0]
-    solid = [ln for ln in ax.get_lines() if ln.get_linestyle() == "-" and len(ln.get_xdata())]
-    dashed = [ln for ln in ax.get_lines() if ln.get_linestyle() == "--" and len(ln.get_xdata())]
-    assert len(solid) == len(dashed) == 2
-    for s, d in zip(solid, dashed):
-        assert s.get_color() == d.get_color()
+    drawn = lambda style: [ln for ln in ax.get_lines() if ln.get_linestyle() == style and len(ln.get_xdata())]  # noqa: E731
+    solid, dashed, dotted = drawn("-"), drawn("--"), drawn(":")
+    assert len(solid) == len(dashed) == len(dotted) == 2
+    for s, d, o in zip(solid, dashed, dotted):
+        assert s.get_color() == d.get_color() == o.get_color()
         assert np.asarray(d.get_ydata()) == pytest.approx(0.5 * np.asarray(s.get_ydata()))
+        assert np.asarray(o.get_ydata()) == pytest.approx(0.25 * np.asarray(s.get_ydata()))
+    shaded = [c for c in ax.collections if len(c.get_paths()) and len(c.get_paths()[0].vertices)]
+    assert len(shaded) == 1  # the one case with a band, from strain 0.05 on
+    assert shaded[0].get_paths()[0].vertices[:, 0].min() == pytest.approx(0.05)
     labels = [t.get_text() for t in figure.axes[-1].get_legend().get_texts()]
-    assert "solid: converged" in labels and "dashed: paper's" in labels
+    assert {"solid: converged", "dashed: paper's", "dotted: closed cell", "shaded: its band"} <= set(labels)
 
 
 def test_a_speed_or_a_closed_cell_that_did_not_run_leaves_its_entries_empty():

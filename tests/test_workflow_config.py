@@ -108,21 +108,31 @@ def test_a_comparison_with_its_own_output_folder_is_refused(root, tmp_path):
     assert f"compare_with.output_dir: '{tmp_path}' is this run's own output_dir" in done.stdout + done.stderr
 
 
-def test_converged_config_plans_the_papers_studies_and_the_bounds_in_its_own_folder(root, tmp_path):
-    """config/converged.yaml: the paper's 48 cases under other numerics (the same names), the rate study's
-    9 slower cases and the drainage study's 6 drained ones, from the paper's 39 dried states; 18 + 2 figures;
-    its own folder, not the paper's."""
+def test_converged_config_plans_the_claims_three_ways_in_its_own_folder(root, tmp_path):
+    """config/converged.yaml: the paper's 48 cases under converged SPH numerics (the same names), the band's
+    3 + 3 (level 3 at 0.75 ns, level 2 at 0.5 ns), the closed cell's 26 claim cases at each of two K and its
+    band's 3 + 3 at level 3, the texture analyser's 4; 18 + 1 figures; its own folder, not the paper's. The
+    rate and drainage bounds are a target of their own (converged_bounds): 9 slower, 6 drained, and the
+    quasi-static closed cell's 6 as their slow end, 2 figures."""
     assert yaml.safe_load((root / "config" / "converged.yaml").read_text())["output_dir"] == "results-converged"
     done = dry_run(root, "--configfile", "config/converged.yaml", "--printshellcmds", "--config", f"output_dir={tmp_path}")
     assert done.returncode == 0, done.stderr[-2000:]
     counts = job_counts(done.stdout)
-    assert counts["compress"] == 48 + 9 + 6 and counts["dry"] == 39 and counts["figure"] == 20
-    assert f"{tmp_path}/figures/rate01.png" in done.stdout
-    assert f"{tmp_path}/runs/D150_G18_P200_t6_v0.1_X0.1.h5" in done.stdout
-    assert f"{tmp_path}/runs/D150_G18_Lp1e-06_P200_t6_v1_X0.5.h5" in done.stdout
-    for setting in ('"n_fluid": 8717', '"model": "pressure"', '"h_over_dx": 1.2', '"dt_ns": 0.5'):  # level 2's
-        assert setting in done.stdout
-    assert '"n_fluid": 3082' not in done.stdout  # no case left at the paper's level 1 (the 200 um cell included)
+    assert counts["compress"] == 48 + 6 + 2 * 26 + 6 + 4 and counts["figure"] == 19
+    assert f"{tmp_path}/figures/texture01.png" in done.stdout and "rate01" not in done.stdout
+    for name in ("D150_dt0.75_G18_P200_R3_t6_v1_X0.5", "D150_dt0.5_G18_P200_t6_v1_X0.1",
+                 "D150_dt100_Fclosed_cell_G18_K2200_P200_t0.1_v1_X0.5", "D150_dt100_Fclosed_cell_G18_P200_R3_t6_v1_X1"):
+        assert f"{tmp_path}/runs/{name}.h5" in done.stdout, name
+    for setting in ('"n_fluid": 8717', '"model": "pressure"', '"h_over_dx": 1.2', '"dt_ns": 1', '"tolerance": 1e-05',
+                    '"dt_ns": 0.75', '"model": "cavity"', '"scheme": "quasi_static"', '"dt_ns": 100'):
+        assert setting in done.stdout, setting
+    bounds = dry_run(root, "converged_bounds", "--configfile", "config/converged.yaml", "--printshellcmds",
+                     "--config", f"output_dir={tmp_path}")
+    assert bounds.returncode == 0, bounds.stderr[-2000:]
+    counts = job_counts(bounds.stdout)
+    assert counts["compress"] == 12 + 9 + 6 - 3 and counts["figure"] == 2  # 1 m/s closed: rate's and drainage's
+    assert f"{tmp_path}/runs/D150_G18_P200_t6_v0.1_X0.1.h5" in bounds.stdout
+    assert f"{tmp_path}/runs/D150_dt100_Fclosed_cell_G18_Lp1e-06_P200_t6_v1_X0.5.h5" in bounds.stdout
 
 
 def test_converged_config_labels_the_levels_its_inherited_studies_vary_by_their_cells(root):

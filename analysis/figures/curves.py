@@ -1,8 +1,10 @@
 """Curves family: one quantity against time or strain, lines by an axis, panels by an axis or by
 quantity, with experimental reference curves on stress-strain panels (figures 4-7, 9-16, 18). With
 `band: <axis>` each line is an ensemble over that axis's values (seeds): its mean and its 10th-90th
-percentile band (analysis/ensembles.py). With `overlay` (a run beside this one, analysis/comparison.py)
-each line has the other run's curve of the same case dashed beside it."""
+percentile band (analysis/ensembles.py). With `overlay` (analysis/figures/render.py: a run beside this
+one, analysis/comparison.py, and this run's further claim columns, analysis/columns.py) each line has their
+curves of the same case beside it in the same colour, each source in its own line style, and this run's
+band beyond strain 0.05 shaded where one exists."""
 import numpy as np
 
 from analysis import quantities
@@ -13,15 +15,16 @@ from analysis.references import load as load_reference
 
 
 def draw(config, fig, series, root=".", overlay=None):
-    """series: the tidy time series table restricted to this figure's cases. overlay: (the other run's
-    series of the same cases, its label, this run's label), or None."""
+    """series: the tidy time series table restricted to this figure's cases. overlay: render.overlay's
+    {'this', 'lines', 'band', 'band_label'}, or None."""
     spec = config["figures"][fig]
     x, ys = spec["x"], spec["y"]
     stage = spec.get("stage", "compression")
     if stage != "all":
         series = series[series["stage"] == (1 if stage == "compression" else 0)]
         if overlay is not None:
-            overlay = (overlay[0][overlay[0]["stage"] == (1 if stage == "compression" else 0)], *overlay[1:])
+            wanted = 1 if stage == "compression" else 0
+            overlay = dict(overlay, lines=[(s[s["stage"] == wanted], label, ls) for s, label, ls in overlay["lines"]])
     line_axes = spec.get("lines") or []
     line_axes = [line_axes] if isinstance(line_axes, str) else line_axes
     panel_axis = spec.get("panels")
@@ -32,7 +35,8 @@ def draw(config, fig, series, root=".", overlay=None):
     n_references = len(spec.get("references", [])) if is_strain(x) and any(map(is_stress, ys)) else 0
 
     per_line = 2 if spec.get("band") else 1  # a band's line and its shaded band each have an entry
-    n_styles = 2 if overlay is not None else 0  # the two runs' line styles
+    # the runs' line styles, and the band's entry
+    n_styles = (1 + len(overlay["lines"]) + bool(overlay["band"])) if overlay is not None else 0
     figure, axes, legend_axes = row_with_legend(len(panels), per_line * n_lines + n_references + n_styles,
                                                 sharey=len(ys) == 1)
     # One colour per line across all panels, so that a panel missing some lines keeps the legend's colours.
@@ -52,10 +56,18 @@ def draw(config, fig, series, root=".", overlay=None):
             ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.4,
                     label=label or None)
             if overlay is not None:
-                _draw_other(ax, overlay[0], curve["case"].iloc[0], x, y, colour)
+                case = curve["case"].iloc[0]
+                for other_series, _, ls in overlay["lines"]:
+                    _draw_other(ax, other_series, case, x, y, colour, ls)
+                if case in overlay["band"] and x == "nominal_strain" and y == "plate_stress_Pa":
+                    grid, low, high = overlay["band"][case]
+                    ax.fill_between(grid, low, high, color=colour, alpha=0.2, lw=0)
         if overlay is not None:
-            ax.plot([], [], color="0.3", lw=1.4, label=f"solid: {overlay[2]}")
-            ax.plot([], [], color="0.3", lw=1.0, ls="--", label=f"dashed: {overlay[1]}")
+            ax.plot([], [], color="0.3", lw=1.4, label=f"solid: {overlay['this']}")
+            for _, label, ls in overlay["lines"]:
+                ax.plot([], [], color="0.3", lw=1.0, ls=ls, label=f"{STYLE_NAMES[ls]}: {label}")
+            if overlay["band"]:
+                ax.fill_between([], [], [], color="0.3", alpha=0.2, lw=0, label=overlay["band_label"])
         if is_strain(x) and is_stress(y):
             _draw_references(config, spec, ax, root)
         title = panel_letter(k) if len(panels) > 1 else ""
@@ -85,11 +97,15 @@ def _draw_band(ax, curve, band_axis, x, y, colour, label):
     ax.plot(grid * sx, mean * sy, color=colour, lw=1.6, label=f"{label}: mean of {len(members)}")
 
 
-def _draw_other(ax, other_series, case, x, y, colour):
-    """The other run's curve of the same case, dashed in the same colour (nothing if it has none)."""
+STYLE_NAMES = {"--": "dashed", ":": "dotted", "-.": "dash-dotted", "-": "solid, thin"}
+
+
+def _draw_other(ax, other_series, case, x, y, colour, ls):
+    """Another source's curve of the same case, in the same colour and its own line style (nothing if it
+    has none)."""
     curve = other_series[other_series["case"] == case].sort_values("time_s")
     if not curve.empty:
-        ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.0, ls="--")
+        ax.plot(curve[x] * quantities.scale(x), curve[y] * quantities.scale(y), color=colour, lw=1.0, ls=ls)
 
 
 def is_strain(quantity):

@@ -1,6 +1,8 @@
 """One figure of the config drawn from a results folder, as the workflow draws it: the `figure` rule
 (workflow/scripts/figure.py) and the tests that check a figure's content call this one function."""
-from analysis import aggregate, comparison, matrix
+import os
+
+from analysis import aggregate, columns, comparison, matrix
 from analysis.figures import curves, model, modulus, shapes, shrinkage
 
 
@@ -20,18 +22,56 @@ def draw(config, fig, output_dir, root="."):
         series, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
         if family in ("shrinkage", "modulus"):
             return (shrinkage if family == "shrinkage" else modulus).draw(config, fig, summary, root)
-        return curves.draw(config, fig, series, root, overlay=other_run_series(config, fig, cases))
+        return curves.draw(config, fig, series, root, overlay=overlay(config, fig, cases, output_dir))
     return (model.draw if family == "model" else shapes.draw)(config, fig, runs, cases)
 
 
-def other_run_series(config, fig, cases):
-    """(series, its label, this run's label) of the other run's results of these cases, for a figure
-    that overlays them (analysis/comparison.py); None if it does not or that run has none of them."""
+def overlay(config, fig, cases, output_dir):
+    """What a figure named in compare_with.figures draws beside this run's curves (analysis/comparison.py,
+    analysis/columns.py), or None: {'this': this run's label, 'lines': [(series under this figure's case
+    names, label, line style)], 'band': {case: (strain, low kPa, high kPa)}, 'band_label': str}. The lines
+    are the other run's (dashed; its label says where it was made by other code) and each further claim
+    column's counterpart of every case."""
     if not comparison.overlaid(config, fig):
         return None
-    found = comparison.other_runs(config, cases)
-    if not found:
-        return None
+    every = columns.default_cases(config, matrix.expand(config))
     _, other_label, this_label = comparison.other(config)
-    series, _ = aggregate.tables([(cases[n], path) for n, path in found.items()])
-    return series, other_label, this_label
+    lines = []
+    found = comparison.other_runs(config, cases)
+    if found:
+        made, differs = comparison.other_made_by(config)
+        if differs:
+            other_label += f" (made by commit {made['commit']})" if made else " (made by unknown code)"
+        lines.append((aggregate.tables([(cases[n], path) for n, path in found.items()])[0], other_label, "--"))
+    column_specs = list(columns.specs(config).values())
+    for spec in column_specs[1:]:
+        pairs = {n: columns.counterpart_name(config, every, cases[n], spec["where"]) for n in cases}
+        runs = [(every[o], f"{output_dir}/runs/{o}.h5", n) for n, o in pairs.items() if o]
+        runs = [r for r in runs if os.path.exists(r[1])]
+        if runs:
+            series, _ = aggregate.tables([(case, path) for case, path, _ in runs])
+            series["case"] = series["case"].map({case.name: n for case, _, n in runs})
+            lines.append((series, spec["label"], spec.get("line_style", ":")))
+    band, band_label = {}, ""
+    if column_specs and column_specs[0].get("band"):
+        band, band_label = band_of(config, every, cases, column_specs[0], output_dir)
+    return {"this": this_label, "lines": lines, "band": band, "band_label": band_label}
+
+
+def band_of(config, every, cases, spec, output_dir):
+    """({case: (strain, low, high)}, label) of the first claim column's band beyond strain 0.05, for the
+    figure's cases, from the column's cases of every dryness at the paper's base and their changes."""
+    base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
+    values = columns.values_of(config, base, spec["where"])
+    at_base = {a: values[a] for a in config["axes"] if a != "dryness"}
+    runs = [(every[n], f"{output_dir}/runs/{n}.h5") for n in sorted(columns.band_cases(config, every, cases, spec))]
+    runs = [r for r in runs if os.path.exists(r[1])]
+    if not runs:
+        return {}, ""
+    series, summary = aggregate.tables(runs)
+    axes = list(config["axes"])
+    band = {n: columns.band_envelope(config, summary, series, values, spec["band"], axes, n) for n in cases
+            if n in set(summary["case"])}
+    label = (f"shaded: its band beyond strain {columns.BAND_FROM} ("
+             + "; ".join(c["label"] for c in spec["band"].values()) + ")")
+    return {n: b for n, b in band.items() if len(b[0])}, label

@@ -18,6 +18,22 @@ rule aggregate:
         "../scripts/aggregate.py"
 
 
+# Each target but the default aggregates its own cases into tables/<target>/ (convergence, tissue, ...).
+TARGET_CASES = {t: matrix.target_cases(config, CASES, t) for t in matrix.targets(config)}
+
+
+rule aggregate_target:
+    input:
+        runs=lambda w: [run_file(c) for c in TARGET_CASES[w.target]],
+    output:
+        timeseries=f"{OUT}/tables/{{target}}/timeseries.csv",
+        summary=f"{OUT}/tables/{{target}}/summary.csv",
+    wildcard_constraints:
+        target="|".join(TARGET_CASES) or "no-target",
+    script:
+        "../scripts/aggregate.py"
+
+
 def figure_inputs(wildcards):
     names = matrix.figure_cases(config, wildcards.fig, CASES)
     runs = [run_file(n) for n in names]
@@ -25,7 +41,9 @@ def figure_inputs(wildcards):
     refs = [config["references"][r]["file"] for r in config["figures"][wildcards.fig].get("references", [])]
     # The other run's results of the same cases, where they exist (compare_with; analysis/comparison.py).
     other = list(comparison.other_runs(config, names).values()) if comparison.overlaid(config, wildcards.fig) else []
-    return {"runs": runs, "dried": dried, "references": refs, "other_runs": other}
+    # This run's claim columns beside them, and the first column's band (analysis/columns.py).
+    beside = [run_file(n) for n in sorted(columns.overlay_cases(config, wildcards.fig, CASES, {n: CASES[n] for n in names}))]
+    return {"runs": runs, "dried": dried, "references": refs, "other_runs": other, "column_runs": beside}
 
 
 rule figure:
@@ -53,6 +71,8 @@ rule report:
     output:
         html=f"{OUT}/report/index.html",
         claims=f"{OUT}/tables/claims.csv",
+        columns=f"{OUT}/tables/claim_columns.csv",      # config claim_columns (analysis/columns.py); empty without
+        provenance=f"{OUT}/tables/provenance.json",     # the version and commit that made the tables
     script:
         "../scripts/report.py"
 

@@ -5,7 +5,7 @@ import sys
 from snakemake.exceptions import WorkflowError
 
 sys.path.insert(0, workflow.basedir)
-from analysis import comparison, matrix  # noqa: E402
+from analysis import columns, comparison, matrix  # noqa: E402
 
 try:
     matrix.check(config, workflow.basedir)

@@ -12,16 +12,6 @@ rule convergence:
         page=f"{OUT}/report/convergence.html",
 
 
-rule aggregate_convergence:
-    input:
-        runs=[run_file(c) for c in CONVERGENCE_CASES],
-    output:
-        timeseries=f"{OUT}/tables/convergence/timeseries.csv",
-        summary=f"{OUT}/tables/convergence/summary.csv",
-    script:
-        "../scripts/aggregate.py"
-
-
 rule convergence_page:
     input:
         summary=f"{OUT}/tables/convergence/summary.csv",

@@ -12,16 +12,6 @@ rule extensions:
         page=f"{OUT}/report/extensions.html",
 
 
-rule aggregate_extensions:
-    input:
-        runs=[run_file(c) for c in EXTENSION_CASES],
-    output:
-        timeseries=f"{OUT}/tables/extensions/timeseries.csv",
-        summary=f"{OUT}/tables/extensions/summary.csv",
-    script:
-        "../scripts/aggregate.py"
-
-
 rule extensions_page:
     input:
         summary=f"{OUT}/tables/extensions/summary.csv",

@@ -44,18 +44,6 @@ rule tissue_large:
         **tissue_target_inputs("tissue_large"),
 
 
-rule aggregate_tissue:
-    input:
-        runs=lambda w: [run_file(c) for c in TISSUE_CASES[w.target]],
-    output:
-        timeseries=f"{OUT}/tables/{{target}}/timeseries.csv",
-        summary=f"{OUT}/tables/{{target}}/summary.csv",
-    wildcard_constraints:
-        target="|".join(TISSUE_TARGETS),
-    script:
-        "../scripts/aggregate.py"
-
-
 rule tissue_page:
     input:
         summary=f"{OUT}/tables/{{target}}/summary.csv",

@@ -2,7 +2,7 @@
 import pandas as pd
 
 import _path  # noqa: F401
-from analysis import claims, matrix, report
+from analysis import claims, columns, matrix, provenance, report
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config = sm.config
@@ -13,5 +13,9 @@ series = pd.read_csv(sm.input.timeseries, usecols=claims.SERIES_COLUMNS)
 base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
 rows = claims.evaluate(summary, base, series)
 pd.DataFrame(rows).to_csv(sm.output.claims, index=False)
+column_rows = columns.evaluate(config, summary, series, base)  # {} without claim_columns
+columns.long_table(column_rows).to_csv(sm.output.columns, index=False)
+provenance.write(sm.output.provenance)
 figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config)}
-report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT, cell_pages=sm.input.cells)
+report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT, cell_pages=sm.input.cells,
+             column_rows=column_rows)
