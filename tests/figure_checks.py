@@ -7,7 +7,7 @@ from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.colors import to_rgba
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from analysis import aggregate, ensembles, quantities
+from analysis import aggregate, ensembles, matrix, quantities
 from analysis.figures import common, render
 from analysis.figures.common import ordered
 from analysis.figures.curves import is_strain, is_stress
@@ -95,9 +95,12 @@ def check_curves(config, fig, figure, out):
 
 
 def check_shapes(config, fig, figure, out):
-    """One slice per (row, column) that has a case: the wall cut as segments, fluid dots, titled."""
+    """One slice per (row, column) that has a case: the wall cut as segments, fluid dots where the fluid is
+    particles (a closed cell's is one pressure, drawn as none: the title then names no fluid), titled."""
     spec = config["figures"][fig]
     cases, _ = render.inputs(config, fig, out)
+    particles = any(matrix.get_key(c.case, "fluid.model") in (None, "sph") for c in cases.values())
+    assert ("fluid blue" in " ".join(figure._suptitle.get_text().split())) == particles, f"{fig}: the title's fluid"
 
     def count(axis):
         if axis == "moment":
@@ -110,7 +113,10 @@ def check_shapes(config, fig, figure, out):
         walls = [c for c in ax.collections if isinstance(c, LineCollection)]
         assert walls and sum(len(c.get_segments()) for c in walls) >= 10, f"{fig} panel {k}: no wall section"
         dots = [c for c in ax.collections if isinstance(c, PathCollection)]
-        assert dots and len(dots[0].get_offsets()) > 0, f"{fig} panel {k}: no fluid particles"
+        if particles:
+            assert dots and len(dots[0].get_offsets()) > 0, f"{fig} panel {k}: no fluid particles"
+        else:
+            assert not dots or not len(dots[0].get_offsets()), f"{fig} panel {k}: dots of a closed cell's fluid"
         assert "t = " in ax.get_title(), f"{fig} panel {k}: untitled"
         segments = np.concatenate([np.concatenate(c.get_segments()) for c in walls])
         (x0, x1), (z0, z1) = ax.get_xlim(), ax.get_ylim()

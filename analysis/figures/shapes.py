@@ -88,7 +88,7 @@ def draw(config, fig, runs, cases):
 
     rows, cols = values(row_axis, "row_order"), values(col_axis, "col_order")
     figure, axes = grid(len(rows), len(cols), panel_w=2.7, panel_h=2.7)
-    tissue = periodic = False
+    tissue = periodic = particles = False
     drawn = {}  # axes: the half-width its slice needs
     for i, rv in enumerate(rows):
         for j, cv in enumerate(cols):
@@ -104,6 +104,7 @@ def draw(config, fig, runs, cases):
             snap = pick_snapshot(path, moment, dried)
             tissue = tissue or snap["wall_cell"].max() > 0
             periodic = periodic or np.isfinite(snap["period_x_m"])
+            particles = particles or len(snap["fluid"]) > 0  # a closed cell's fluid is one pressure: no dots
             plate_length = match[0].case.get("compression", {}).get("plate_length_um", 150) * 1e-6
             drawn[ax] = draw_slice(ax, snap, plate_length)
             label = [value_label(config, a, v) for a, v in ((row_axis, rv), (col_axis, cv)) if a and a != "moment"]
@@ -122,5 +123,6 @@ def draw(config, fig, runs, cases):
         ax.set_ylim(-reach, reach)
     walls = "walls coloured by cell" if tissue else "wall green"
     period = ", the period dashed" if periodic else ""
-    figure_title(figure, spec["title"] + f" (mid-plane slice: {walls}, fluid blue, plates black{period})", fontsize=10)
+    fluid = ", fluid blue" if particles else ""
+    figure_title(figure, spec["title"] + f" (mid-plane slice: {walls}{fluid}, plates black{period})", fontsize=10)
     return figure
