@@ -230,21 +230,23 @@ def counterpart_name(config, cases, case, where):
     return next((n for n, c in cases.items() if all(_same(c.values[a], wanted[a]) for a in wanted)), None)
 
 
-def band_envelope(config, summary, series, column_values, changes, axes, case):
-    """(grid strains, low, high) of one case's smoothed plate stress [kPa] over its column's band changes,
-    from BAND_FROM on (empty where no change moves it)."""
-    curves = [claims.stress_curve(series, case)]
-    for change in changes.values():
-        _, changed, _ = changed_view(config, summary, series, column_values,
-                                     values_of(config, column_values, change["where"]), axes)
-        curves.append(claims.stress_curve(changed, case))
-    n = min(len(g) for g, _ in curves)
-    if n == 0 or len(curves) < 2:
-        return np.array([]), np.array([]), np.array([])
-    grid = curves[0][0][:n]
-    stack = np.array([s[:n] for _, s in curves])
-    keep = grid >= BAND_FROM - 1e-12
-    return grid[keep], stack.min(axis=0)[keep], stack.max(axis=0)[keep]
+def band_envelopes(config, summary, series, column_values, changes, axes, cases):
+    """{case: (grid strains, low, high)} of each case's smoothed plate stress [kPa] over its column's band
+    changes, from BAND_FROM on (empty where no change moves it); each change's view is made once."""
+    views = [changed_view(config, summary, series, column_values,
+                          values_of(config, column_values, change["where"]), axes)[1] for change in changes.values()]
+    out = {}
+    for case in cases:
+        curves = [claims.stress_curve(view, case) for view in [series, *views]]
+        n = min(len(g) for g, _ in curves)
+        if n == 0 or len(curves) < 2:
+            out[case] = (np.array([]), np.array([]), np.array([]))
+            continue
+        grid = curves[0][0][:n]
+        stack = np.array([s[:n] for _, s in curves])
+        keep = grid >= BAND_FROM - 1e-12
+        out[case] = (grid[keep], stack.min(axis=0)[keep], stack.max(axis=0)[keep])
+    return out
 
 
 def default_cases(config, every):

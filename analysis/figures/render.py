@@ -63,15 +63,14 @@ def band_of(config, every, cases, spec, output_dir):
     figure's cases, from the column's cases of every dryness at the paper's base and their changes."""
     base = {axis: matrix.base_value(config, axis) for axis in config["axes"]}
     values = columns.values_of(config, base, spec["where"])
-    at_base = {a: values[a] for a in config["axes"] if a != "dryness"}
     runs = [(every[n], f"{output_dir}/runs/{n}.h5") for n in sorted(columns.band_cases(config, every, cases, spec))]
     runs = [r for r in runs if os.path.exists(r[1])]
     if not runs:
         return {}, ""
     series, summary = aggregate.tables(runs)
     axes = list(config["axes"])
-    band = {n: columns.band_envelope(config, summary, series, values, spec["band"], axes, n) for n in cases
-            if n in set(summary["case"])}
+    band = columns.band_envelopes(config, summary, series, values, spec["band"], axes,
+                                  [n for n in cases if n in set(summary["case"])])
     label = (f"shaded: its band beyond strain {columns.BAND_FROM} ("
              + "; ".join(c["label"] for c in spec["band"].values()) + ")")
     return {n: b for n, b in band.items() if len(b[0])}, label
