@@ -1,7 +1,8 @@
 """This run beside another (config `compare_with`, e.g. config/converged.yaml beside the paper's
 configuration in results/): every claim's verdict and value in both runs, which conclusions changed,
-and the other run's curves for the figures it names. The same case name means the same physical case in
-both runs (the numerics are in `base`, not in the names), so the other run's cases are found by name."""
+and the other run's curves for the figures it names. The same physical case is the other run's case of
+the same study with the same values of the axes the study varies (the numerics are in `base`; a case whose
+numerics put another value in its name here, as the thickest wall's time step, is still found)."""
 import html
 import os
 
@@ -58,13 +59,42 @@ def overlaid(config, fig):
     return bool(config.get(KEY)) and fig in config[KEY].get("figures", [])
 
 
-def other_runs(config, names):
-    """{case: result path} of the other run's results for these cases, those that exist."""
+def other_runs(config, cases):
+    """{case: result path} of the other run's results of these cases ({name: Case}), those that exist: for
+    each, the other run's case of one of its studies with the same values of the axes that study varies
+    (the other run's manifest.csv); by name where the other run has no manifest or no such case."""
     spec = other(config)
     if not spec:
         return {}
-    paths = {n: f"{spec[0]}/runs/{n}.h5" for n in names}
-    return {n: p for n, p in paths.items() if os.path.exists(p)}
+    manifest_path = f"{spec[0]}/manifest.csv"
+    manifest = pd.read_csv(manifest_path) if os.path.exists(manifest_path) else None
+    out = {}
+    for name, case in cases.items():
+        path = (same_case(config, manifest, case) if manifest is not None else None) or f"{spec[0]}/runs/{name}.h5"
+        if os.path.exists(path):
+            out[name] = path
+    return out
+
+
+def same_case(config, manifest, case):
+    """The other run's result of `case`: its row of one of the case's studies whose values of the axes
+    that study varies are the case's; None if it has none."""
+    for study in case.studies:
+        axes = [a for a in config["studies"][study].get("vary", {}) if a in manifest]
+        rows = manifest[manifest["studies"].fillna("").str.split().apply(lambda names: study in names)]
+        for axis in axes:
+            rows = rows[[_same_value(v, case.values[axis]) for v in rows[axis]]]
+        if len(rows):
+            return rows.iloc[0]["result"]
+    return None
+
+
+def _same_value(a, b):
+    """A manifest's value (read back from CSV: numbers as floats) against a case's."""
+    try:
+        return bool(np.isclose(float(a), float(b), rtol=1e-9, atol=0))
+    except (TypeError, ValueError):
+        return str(a) == str(b)
 
 
 def missing_note(config):

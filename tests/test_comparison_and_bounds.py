@@ -7,8 +7,9 @@ import pandas as pd
 import pytest
 import yaml
 
-from analysis import bounds, comparison
+from analysis import bounds, comparison, matrix
 from analysis.figures import curves
+from conftest import workflow_config
 
 
 def claim(text, value, verdict, figure=7):
@@ -121,3 +122,24 @@ def test_a_speed_or_a_closed_cell_that_did_not_run_leaves_its_entries_empty():
     drained = bounds.drained_table(drained_summary().iloc[1:])  # the closed cell did not run
     assert drained["change at 0.05"].isna().all() and (drained["water lost by 0.10 [%]"] > 0).all()
     assert "lost 2 % of its water by strain 0.10 (X/X0 = 1). " in bounds.drainage_text(drained)
+
+
+def test_the_other_runs_case_is_the_one_of_the_same_study_and_values_whatever_its_name(root, tmp_path):
+    """converged.yaml's thickest wall runs at 0.9 ns (its wall limit at level 2), which its name says
+    (dt0.9); the paper's run names it without: the other run's manifest finds it by its study and the
+    values that study varies. A case the manifest does not hold is looked for by its name."""
+    config = workflow_config(root, ["config/converged.yaml"])
+    config["compare_with"]["output_dir"] = str(tmp_path)
+    cases = matrix.expand(config)
+    thick, fresh = cases["D150_dt0.9_G18_P200_t100_v1_X1"], cases["D150_G18_P200_t6_v1_X1"]
+    (tmp_path / "runs").mkdir()
+    for name in ("D150_G18_P200_t100_v1_X1", "D150_G18_P200_t12_v1_X1", "D150_G18_P200_t6_v1_X1"):
+        (tmp_path / "runs" / f"{name}.h5").write_text("")
+    pd.DataFrame([{"case": n, "studies": "wall_thickness", "dryness": 1.0, "t0_um": t, "result": f"{tmp_path}/runs/{n}.h5"}
+                  for n, t in (("D150_G18_P200_t12_v1_X1", 12.0), ("D150_G18_P200_t100_v1_X1", 100.0))]
+                 ).to_csv(tmp_path / "manifest.csv", index=False)
+    found = comparison.other_runs(config, {thick.name: thick, fresh.name: fresh})
+    assert found[thick.name] == f"{tmp_path}/runs/D150_G18_P200_t100_v1_X1.h5"
+    assert found[fresh.name] == f"{tmp_path}/runs/D150_G18_P200_t6_v1_X1.h5"  # not in the manifest: its name
+    (tmp_path / "manifest.csv").unlink()
+    assert thick.name not in comparison.other_runs(config, {thick.name: thick})  # no manifest: by name, not there

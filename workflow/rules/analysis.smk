@@ -3,7 +3,8 @@ rule manifest:
     output:
         f"{OUT}/manifest.csv",
     params:
-        cases=lambda w: [(c.name, c.dried, c.studies, c.values) for c in map(CASES.get, DEFAULT_CASES)],
+        cases=lambda w: [(c.name, c.dried, c.studies, c.values, case_file(c.name), run_file(c.name))
+                         for c in map(CASES.get, DEFAULT_CASES)],
     script:
         "../scripts/manifest.py"
 
@@ -40,7 +41,8 @@ def figure_inputs(wildcards):
     dried = sorted({dried_file(CASES[n].dried) for n in names})
     refs = [config["references"][r]["file"] for r in config["figures"][wildcards.fig].get("references", [])]
     # The other run's results of the same cases, where they exist (compare_with; analysis/comparison.py).
-    other = list(comparison.other_runs(config, names).values()) if comparison.overlaid(config, wildcards.fig) else []
+    other = (list(comparison.other_runs(config, {n: CASES[n] for n in names}).values())
+             if comparison.overlaid(config, wildcards.fig) else [])
     # This run's claim columns beside them, and the first column's band (analysis/columns.py).
     beside = [run_file(n) for n in sorted(columns.overlay_cases(config, wildcards.fig, CASES, {n: CASES[n] for n in names}))]
     return {"runs": runs, "dried": dried, "references": refs, "other_runs": other, "column_runs": beside}
