@@ -39,6 +39,24 @@ TEST(Bench, PrintsTheMedianStepAndEveryPhaseThatAddUpToIt) {
   EXPECT_LT(phases_ms, 1.1 * total_ms) << r.out;
 }
 
+// The bench steps the scheme its case asks for (time.scheme): a closed cell's quasi-static steps each
+// relax the wall, which the bench counts; the leapfrog says so.
+TEST(Bench, StepsTheSchemeTheCaseAsksFor) {
+  ScratchDir dir("bench_scheme");
+  const auto quasi = dir.write("quasi.json", R"({"cell": {"n_wall": 162, "diameter_um": 40}, "fluid": {"model": "cavity"},
+      "time": {"scheme": "quasi_static", "dt_ns": 200}, "output": {"record_every": 5}})");
+  const auto r = run_cli({"bench", quasi, "--steps", "5", "--repeats", "1"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(scheme: quasi-static, ([\d.]+) force evaluations a step)")))
+      << r.out;
+  EXPECT_GE(std::stod(m[1]), 1.0);
+  const auto leapfrog = dir.write("leapfrog.json", R"({"cell": {"n_wall": 402, "n_fluid": 400}, "output": {"record_every": 5}})");
+  const auto d = run_cli({"bench", leapfrog, "--steps", "5", "--repeats", "1"}, dir);
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_NE(d.out.find("scheme: leapfrog"), std::string::npos) << d.out;
+}
+
 // --sizes: the case at the three resolution levels (2.83x and 8x the fluid, 2x and 4x the wall,
 // half the time step at level 3) and as tissues of 8 and 27 of its cells, each on 1 and 2 threads,
 // with one row per run.

@@ -15,9 +15,11 @@
 #include "engine/newton_preconditioner.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/block_stiffness.hpp"
+#include "geometry/heterogeneity.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/tissue.hpp"
 #include "physics/cavity_pressure.hpp"
+#include "physics/wall_bonds.hpp"
 #include "physics/wall_stiffness.hpp"
 #include "small_cell.hpp"
 
@@ -78,6 +80,47 @@ TEST(PressureFollowerStiffness, IsMinusTheDerivativeOfThePressuresForceAtFixedPr
   }
 }
 
+// The springs' stiffness (Eqs 15 and 21) is minus the central difference of their forces at a fixed history,
+// to 1e-6 of the column's size: on a rough wall part in tension, part in compression (its bonds' untensioned
+// sides have no geometric term, so the test's wall is stretched by 10 % on average), mid-drying at X/X0 = 0.5
+// (L_ref shortened), with plastic elongations on a third of the bonds (the springs see l - delta_p).
+TEST(WallSpringStiffness, IsMinusTheDerivativeOfTheSpringsForceWithAPlasticElongation) {
+  const Params p = small_cell_case({{"drying", {{"dryness", 0.5}}}});
+  const Tissue tissue = build_tissue(p);
+  const Eigen::Matrix3Xd x = 1.10 * rough_wall(tissue);
+  const BondLaw law = make_bond_law(p, draw_property_factors({}, tissue.wall_x, tissue.mesh,
+                                                             tissue.cells.cell_of_wall(), tissue.cells.count()));
+  std::vector<double> plastic(tissue.mesh.bonds.size(), 0.0);
+  for (std::size_t b = 0; b < plastic.size(); b += 3) plastic[b] = 0.02 * tissue.mesh.rest_length_m[b];
+  const double ramp = 0.6;
+  const auto forces = [&](const Eigen::Matrix3Xd& at) {
+    WallParticles w{at, Eigen::Matrix3Xd::Zero(3, at.cols()), tissue.wall_mass_kg};
+    Eigen::Matrix3Xd f = Eigen::Matrix3Xd::Zero(3, at.cols());
+    std::vector<double> history = plastic;  // an elastic law: the sliders stay where they are
+    BondScratch scratch;
+    add_bond_forces(w, tissue.mesh, law, ramp, 1, history, f, scratch);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
+  };
+  BlockStiffness springs(x.cols(), tissue.mesh.bonds);
+  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, plastic, PlateLaw{}, Plates{}, 0.0, springs);
+  const Eigen::MatrixXd K = Eigen::MatrixXd(springs.matrix());
+  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
+  const double h = 1e-12;
+  for (Eigen::Index j : {0, 7, 100, 241, 302, 480}) {
+    Eigen::Matrix3Xd plus = x, minus = x;
+    plus(j % 3, j / 3) += h;
+    minus(j % 3, j / 3) -= h;
+    const Eigen::VectorXd fd = -(forces(plus) - forces(minus)) / (2 * h);
+    EXPECT_LT((K.col(j) - fd).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff()) << "column " << j;
+    EXPECT_GT(fd.cwiseAbs().maxCoeff(), 0.0);
+  }
+  // Without the sliders the stiffness is another: the test sees the plastic elongation.
+  BlockStiffness elastic(x.cols(), tissue.mesh.bonds);
+  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, std::vector<double>(plastic.size(), 0.0), PlateLaw{}, Plates{},
+                            0.0, elastic);
+  EXPECT_GT((Eigen::MatrixXd(elastic.matrix()) - K).cwiseAbs().maxCoeff(), 1e-3 * K.cwiseAbs().maxCoeff());
+}
+
 // -dP/dV of a cell whose density is Eq 11's backward Euler (implicit_cavity_density) at fixed M_n and a:
 // central differences to 1e-5; a = 0 is the sealed value, a drained cell has none.
 TEST(CavityPressure, TheIncrementsVolumeStiffnessIsMinusTheDerivativeOfItsPressure) {
@@ -106,7 +149,8 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
   const Eigen::Matrix3Xd& x = sim.state().wall.x;
   const Eigen::Index n = x.size();
   BlockStiffness stiffness(x.cols(), sim.mesh().bonds);
-  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e-2, stiffness);
+  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m,
+                            sim.plate_law(), sim.state().plates, 1e-2, stiffness);
   add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
   const Eigen::SparseMatrix<double>& A = stiffness.matrix();
   const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
@@ -144,7 +188,8 @@ TEST(NewtonPreconditioner, SolvesWithEveryCellsVolumeSpringWhereContactsJoinTheC
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
   for (double joining_N_m : {0.0, 1e3}) {
     BlockStiffness stiffness(x.cols(), pairs);
-    add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.plate_law(), sim.state().plates, 1e2, stiffness);
+    add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m,
+                            sim.plate_law(), sim.state().plates, 1e2, stiffness);
     add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
     const Eigen::Vector3d line = (x.col(b) - x.col(a)).normalized();
     const Eigen::Matrix3d block = joining_N_m * line * line.transpose();

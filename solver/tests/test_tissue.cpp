@@ -2,6 +2,7 @@
 // cells' fluids.
 #include <cmath>
 #include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include "geometry/containment.hpp"
 #include "geometry/tissue.hpp"
 #include "physics/cell_contact.hpp"
+#include "physics/lamella_law.hpp"
 #include "small_cell.hpp"
 
 using namespace cellsim;
@@ -265,6 +267,31 @@ TEST(LamellaLaw, SoftensFromItsPeakToZeroAndDissipatesTheFractureEnergy) {
     previous = f;
   }
   EXPECT_NEAR(work, 1.0 * a_w, 1e-4 * a_w);
+}
+
+// The case's law (make_lamella_law): F_max = strength x a_w, delta_f from G_f; a G_f that cannot reach past
+// delta_0 is refused, naming the key; G_f = 0 is the brittle bond.
+TEST(LamellaLaw, TheCasesLawTakesItsKeysAndRefusesAFractureEnergyBelowTheElasticOne) {
+  Params p;
+  p.lamella_stiffness_N_m = 1e3;
+  p.lamella_strength_Pa = 1.5e6;
+  p.lamella_fracture_energy_J_m2 = 1.0;
+  const double a_w = 34e-12;
+  const LamellaLaw law = make_lamella_law(p, a_w);
+  EXPECT_DOUBLE_EQ(law.peak_force_N, 1.5e6 * a_w);
+  EXPECT_DOUBLE_EQ(law.break_opening_m, 2.0 * a_w / (1.5e6 * a_w));
+  // The elastic energy at the peak is F_max delta_0 / (2 a_w) = 1.5e6^2 x 34e-12 / 2e3 = 0.03825 J/m^2.
+  p.lamella_fracture_energy_J_m2 = 0.038;
+  try {
+    make_lamella_law(p, a_w);
+    FAIL() << "a fracture energy below the elastic energy at the peak was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tissue.lamella_fracture_energy_J_m2 = 0.038"), std::string::npos) << e.what();
+  }
+  p.lamella_fracture_energy_J_m2 = 0.039;
+  EXPECT_GT(make_lamella_law(p, a_w).break_opening_m, make_lamella_law(p, a_w).elastic_limit_m());
+  p.lamella_fracture_energy_J_m2 = 0;
+  EXPECT_EQ(make_lamella_law(p, a_w).break_opening_m, 0.0);
 }
 
 // The work put into a bond along a path that opens, closes part way and opens past delta_f equals the

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numeric>
 
+#include "engine/scheme.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/tissue.hpp"
 
@@ -31,13 +33,17 @@ BenchResult measure_steps(const Params& case_params, long steps, int repeats, in
   r.threads = threads;
   r.bonds = cell.mesh.bonds.size();
   r.hinges = cell.mesh.hinges.size();
+  r.quasi_static = p.time_scheme == kQuasiStatic;
   for (int repeat = 0; repeat < repeats; ++repeat) {
     Simulation sim(p, cell);
     sim.set_threads(threads);
+    const std::unique_ptr<Scheme> scheme = make_scheme(sim);  // the case's time.scheme
     sim.timer().reset();
+    double evaluations = 0;
     const auto start = std::chrono::steady_clock::now();
     for (long n = 1; n <= steps; ++n) {
-      sim.step();
+      scheme->step();
+      evaluations += sim.state().relaxation_evaluations;  // NaN for a leapfrog step
       if (n % p.record_every == 0) {  // what a run adds at each record (snapshots are file output)
         sim.timer().start();
         sim.check_containment();
@@ -50,6 +56,7 @@ BenchResult measure_steps(const Params& case_params, long steps, int repeats, in
     auto& phases = r.phase_ms.emplace_back();
     for (int ph = 0; ph < static_cast<int>(Phase::Count); ++ph)
       phases[static_cast<std::size_t>(ph)] = 1e3 * sim.timer().seconds(static_cast<Phase>(ph)) / static_cast<double>(steps);
+    r.evaluations_per_step = evaluations / static_cast<double>(steps);  // every repeat steps alike
     r.fluid_pairs = sim.neighbours().fluid_fluid().pairs;  // for ns-per-pair estimates
     r.wall_pairs = sim.neighbours().fluid_wall().pairs;
   }
@@ -62,6 +69,11 @@ void print_benchmark(const BenchResult& r) {
       r.fluid_particles, r.wall_particles, r.steps, r.ms_per_step.size(), r.threads, r.threads == 1 ? "" : "s");
   std::printf("pair lists (cut-off + skin) at the end: %zu fluid-fluid, %zu fluid-wall; %zu bonds, %zu hinges\n",
               r.fluid_pairs, r.wall_pairs, r.bonds, r.hinges);
+  if (r.quasi_static)
+    std::printf("scheme: quasi-static, %.1f force evaluations a step (each relaxed to equilibrium)\n",
+                r.evaluations_per_step);
+  else
+    std::printf("scheme: leapfrog (kick-drift-kick)\n");
   const double m = r.median_ms();
   std::printf("median %.4f ms/step (min %.4f, max %.4f), %.4f million particle-steps/s\n", m,
               *std::min_element(r.ms_per_step.begin(), r.ms_per_step.end()),

@@ -24,6 +24,10 @@ struct BenchResult {
   std::vector<double> ms_per_step;                                        // per repeat
   std::vector<std::array<double, static_cast<int>(Phase::Count)>> phase_ms;  // per repeat, per step
   std::size_t fluid_pairs = 0, wall_pairs = 0, bonds = 0, hinges = 0;
+  // The case's time.scheme, and for the quasi-static one its relaxation's force evaluations a step (the
+  // mean over a repeat's steps, which every repeat steps alike; NaN for the leapfrog).
+  bool quasi_static = false;
+  double evaluations_per_step = 0;
 
   // The repeat with the median time; its phases add up to its time (the medians of the phases of
   // different repeats need not).

@@ -3,12 +3,13 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <sstream>
 #include <vector>
 
 #include "cli/progress.hpp"
 #include "core/errors.hpp"
-#include "engine/quasi_static.hpp"
+#include "engine/scheme.hpp"
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
 #include "engine/steady_state.hpp"
@@ -106,11 +107,12 @@ void run_case(const Params& p, const RunOptions& options) {
   }
   Simulation sim(p, tissue);  // refuses a time step over the wall-spring limit, before any output
   sim.set_threads(options.threads);
-  // time.scheme: a leapfrog step, or a step of loads and a relaxation to equilibrium (quasi_static.hpp).
-  const std::function<void()> step = [&] { p.time_scheme == kQuasiStatic ? quasi_static_step(sim) : sim.step(); };
+  // time.scheme: a leapfrog step, or a step of loads and a relaxation to equilibrium (scheme.hpp).
+  const std::unique_ptr<Scheme> scheme = make_scheme(sim);
+  const std::function<void()> step = [&] { scheme->step(); };
   if (!options.from_path.empty()) {  // a saved state that does not fit this case: refused before any output
     try {
-      sim.check_restorable(saved.state);
+      check_restorable(saved.state, sim.state(), sim.mesh().bonds.size());
     } catch (const InputError& e) {
       throw InputError("--from '" + options.from_path + "': " + e.what());
     }
@@ -181,7 +183,7 @@ void run_case(const Params& p, const RunOptions& options) {
     if (!drying.warning().empty()) std::fprintf(stderr, "cellsim: WARNING: %s\n", drying.warning().c_str());
     if (compression_steps > 0) {
       const Record dried = records.back();
-      sim.start_compression();
+      scheme->start_compression();
       if (p.end_strain && !p.unload_at_strain) progress.aim("strain", *p.end_strain);
       run_stage(sim, step, compression_steps, strain_reached, out, records, progress, "compression",
                 [&] { return sim.nominal_strain(); });

@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "core/errors.hpp"
 #include "engine/newton_preconditioner.hpp"
+#include "engine/newton_solver.hpp"
 #include "engine/rotation_hold.hpp"
 #include "engine/simulation.hpp"
 #include "geometry/block_stiffness.hpp"
@@ -20,21 +22,11 @@
 namespace cellsim {
 namespace {
 
-// Newton's: the inner solve stops at |r| <= this x |F|, or after so many products; a product's probe
-// moves no particle farther than kProbe_m. The springs' stiffness gets kStiffnessShift_N_m on its
-// diagonal (the free motions between frictionless plates). The shift starts at kLeastShift_N_m where
-// it must and grows or shrinks by kShiftGrowth. A step is halved (at most kMaxHalvings times) until the
-// potential falls by kArmijo of its first-order promise F.d, or, within kRoundOff of the potential, until
-// the largest force falls; a full step that fell by kGoodRatio of the model's promise shrinks the shift.
-constexpr double kForcingTerm = 0.1, kProbe_m = 1e-11, kStiffnessShift_N_m = 1e-2;
-constexpr double kLeastShift_N_m = 1e-2, kShiftGrowth = 4, kArmijo = 1e-4, kGoodRatio = 0.75, kRoundOff = 1e-12;
-constexpr int kMaxHalvings = 10;
+// The springs' stiffness in the preconditioner gets kStiffnessShift_N_m on its diagonal (the free motions
+// between frictionless plates). No particle moves more than kMaxMoveOverRestLength of the mean rest length in
+// one Newton step (newton_solver.hpp).
+constexpr double kStiffnessShift_N_m = 1e-2;
 constexpr double kMaxMoveOverRestLength = 0.25;
-constexpr int kMaxConjugateGradients = 200;
-// The preconditioner is factored afresh at the point a Newton step starts from when the last step's
-// conjugate gradients took more products than this or met negative curvature: where the wall folds, the
-// stiffness of the relaxation's start no longer holds (a snap), elsewhere it does for the whole step.
-constexpr int kRefactorAfterProducts = 20;
 constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
 
 // The load scale: max(P_T0, the largest |P| of a cell).
@@ -47,12 +39,6 @@ double load_pressure_Pa(const Simulation& sim) {
 // What a wall particle carries: the load scale x the mean area a wall particle owns.
 double pressure_load_N(const Simulation& sim) {
   return load_pressure_Pa(sim) * sim.surface().area_m2 / static_cast<double>(sim.state().wall.size());
-}
-
-using Flat = Eigen::Map<const Eigen::VectorXd>;
-Flat flat(const Eigen::Matrix3Xd& m) { return Flat(m.data(), m.size()); }
-Eigen::Map<const Eigen::Matrix3Xd> as_positions(const Eigen::VectorXd& v) {
-  return Eigen::Map<const Eigen::Matrix3Xd>(v.data(), 3, v.size() / 3);
 }
 
 // What the wall's laws write as they are evaluated (the plastic sliders, the middle lamella's damage):
@@ -74,16 +60,6 @@ struct WallHistory {
   }
 };
 
-// One evaluation of the wall at positions x from the accepted history: its forces, and what the
-// relaxation descends, the potential: the stored energy of the wall (springs, bending, plates, contacts)
-// less the work of the fluid's pressure along the volume's path in this increment, which is the fluid's
-// potential there (cavity_fluid.hpp; its mass is slaved to V, so M e(M/V) at the step's mass is not).
-// `dissipated_J` is what the wall's history took (plastic flow, the lamella's damage) up to x.
-struct WallPoint {
-  Eigen::Matrix3Xd x, force;
-  double potential_J = 0, dissipated_J = 0;
-};
-
 const Eigen::Matrix3Xd& forces_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
   State& s = sim.mutable_state();
   s.wall.x = x;
@@ -93,25 +69,20 @@ const Eigen::Matrix3Xd& forces_at(Simulation& sim, const Eigen::Matrix3Xd& x, co
 }
 
 // The forces that can move the wall: a held cell's (rotation_hold.hpp) less the hold's reaction.
-void drop_held_directions(const Simulation& sim, Eigen::Ref<Eigen::VectorXd> v) {
-  if (const RotationHold* hold = sim.rotation_hold()) hold->project(v);
+void drop_held_directions(const RotationHold* hold, Eigen::Ref<Eigen::VectorXd> v) {
+  if (hold) hold->project(v);
 }
 
-// The potential and what the history dissipated, at the state's positions and rates now.
+// What the relaxation descends, the potential, at the state's positions and rates now: the stored energy of
+// the wall (springs, bending, plates, contacts) less the work of the fluid's pressure along the volume's
+// path in this increment, which is the fluid's potential there (cavity_fluid.hpp; its mass is slaved to V,
+// so M e(M/V) at the step's mass is not); and what the wall's history took (plastic flow, the lamella's
+// damage) up to here.
 void potential_now(Simulation& sim, double& potential_J, double& dissipated_J) {
   const EnergyValues e = sim.energy_terms_now();
   potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
   dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
 }
-
-WallPoint evaluate(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history) {
-  WallPoint point{x, forces_at(sim, x, history)};
-  if (const RotationHold* hold = sim.rotation_hold()) hold->project(point.force);
-  potential_now(sim, point.potential_J, point.dissipated_J);
-  return point;
-}
-
-double largest_force_N(const Eigen::Matrix3Xd& force) { return std::sqrt(force.colwise().squaredNorm().maxCoeff()); }
 
 // Whether a tissue's contacts and lamella join its cells (a lone cell has neither).
 bool cells_joined(const Simulation& sim) { return sim.cells().count() > 1; }
@@ -155,8 +126,8 @@ void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& hi
   NewtonPreconditioner& preconditioner = at.preconditioner;
   const State& s = sim.state();
   stiffness.set_zero();
-  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(), sim.plate_law(), s.plates,
-                            kStiffnessShift_N_m, stiffness);
+  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(), s.bond_plastic_elongation_m,
+                            sim.plate_law(), s.plates, kStiffnessShift_N_m, stiffness);
   add_pressure_follower_stiffness(x, sim.mesh(), sim.cell_mean_fluid_pressure_Pa(), stiffness);
   sim.bending().add_gauss_newton_stiffness(x, Bending::FarCorners::OnBonds, stiffness);
   if (cells_joined(sim))
@@ -165,63 +136,6 @@ void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& hi
   const CavityFluid& cavity = sim.cavity_fluid();
   preconditioner.factor(stiffness.matrix(), CavityFluid::volume_gradients(sim.surface()), sim.cells(),
                         cavity.volume_stiffness_Pa_m3(sim.eos()), cells_joined(sim));
-}
-
-// A Newton direction: d solving (H + shift) d = F by conjugate gradients, H p = -(F(x + e p) - F(x)) / e
-// a difference of forces, preconditioned with the wall's stiffness (newton_preconditioner.hpp): Steihaug's
-// truncated CG. Where H + shift shows a direction p of negative curvature (a fold forming), the potential falls
-// along it however far one goes: the step follows it downhill to the trust radius (no particle farther
-// than max_move_m). Every step goes downhill at first (F.d > 0).
-struct NewtonDirection {
-  Eigen::VectorXd d;
-  double model_decrease_J = 0;  // F.d - d.H.d / 2, the quadratic model's promise
-  bool negative_curvature = false;
-  int products = 0;  // of H with a direction: force evaluations
-};
-
-double longest_move_m(const Eigen::VectorXd& d) { return std::sqrt(as_positions(d).colwise().squaredNorm().maxCoeff()); }
-
-NewtonDirection newton_direction(Simulation& sim, const WallPoint& at, const WallHistory& history, double shift_N_m,
-                                 const NewtonPreconditioner& preconditioner,
-                                 double max_move_m, std::int64_t& evaluations, std::int64_t max_evaluations) {
-  NewtonDirection out;
-  const Eigen::VectorXd f = flat(at.force);
-  out.d = Eigen::VectorXd::Zero(f.size());
-  Eigen::VectorXd Hd = Eigen::VectorXd::Zero(f.size());  // H d, unshifted, for the model's decrease
-  // A held cell's directions stay on its hold: the residual, the preconditioned residual and the
-  // products are all projected (rotation_hold.hpp), so every step keeps C(x) = 0.
-  Eigen::VectorXd r = f, z = preconditioner.solve(r), Hp;
-  drop_held_directions(sim, z);
-  Eigen::VectorXd p = z;
-  double rz = r.dot(z);
-  for (int cg = 0; cg < kMaxConjugateGradients && evaluations < max_evaluations; ++cg) {
-    const double probe = kProbe_m / p.cwiseAbs().maxCoeff();
-    Hp = -(flat(forces_at(sim, at.x + probe * as_positions(p), history)) - f) / probe;
-    drop_held_directions(sim, Hp);
-    ++evaluations;
-    ++out.products;
-    const double pHp = p.dot(Hp);
-    if (!(pHp + shift_N_m * p.squaredNorm() > 0)) {
-      // Downhill along p to the trust radius: F.p > 0 for every CG direction (p.r_0 = p.r_k = r_k.z_k).
-      const double tau = max_move_m / longest_move_m(p);
-      out.negative_curvature = true;
-      out.model_decrease_J = f.dot(out.d + tau * p) - 0.5 * (out.d.dot(Hd) + 2 * tau * out.d.dot(Hp) + tau * tau * pHp);
-      out.d += tau * p;
-      return out;
-    }
-    const double alpha = rz / (pHp + shift_N_m * p.squaredNorm());
-    out.d += alpha * p;
-    Hd += alpha * Hp;
-    r -= alpha * (Hp + shift_N_m * p);
-    if (r.norm() <= kForcingTerm * f.norm()) break;
-    z = preconditioner.solve(r);
-    drop_held_directions(sim, z);
-    const double rz_next = r.dot(z);
-    p = z + (rz_next / rz) * p;
-    rz = rz_next;
-  }
-  out.model_decrease_J = f.dot(out.d) - 0.5 * out.d.dot(Hd);
-  return out;
 }
 
 // The plates' predictor: a plate that moves at fixed particles would thrust the particles it touches k_pw
@@ -241,67 +155,60 @@ void move_touching_particles_with_plates(Simulation& sim, const Plates& before) 
   }
 }
 
+// The relaxation as a problem of newton_solver.hpp: a point is the wall at x, its force the wall's forces
+// on the rotation hold, its potential the one above, its load the pressure load there. Every evaluation
+// starts from the history of the last accepted point.
+class WallRelaxation final : public NewtonProblem {
+ public:
+  WallRelaxation(Simulation& sim, const RotationHold* hold)
+      : sim_(sim), hold_(hold), history_(WallHistory::of(sim.state())) {}
+
+  Point evaluate(const Eigen::Matrix3Xd& x) override {
+    Point point{x, forces_at(sim_, x, history_)};
+    if (hold_) hold_->project(point.force);
+    potential_now(sim_, point.potential_J, point.dissipated_J);
+    point.load_N = pressure_load_N(sim_);
+    return point;
+  }
+  const Eigen::Matrix3Xd& unconstrained_force(const Eigen::Matrix3Xd& x) override { return forces_at(sim_, x, history_); }
+  void accept_last() override { history_ = WallHistory::of(sim_.state()); }
+  // The pattern is laid out at the first factoring, from the lists the first evaluation left.
+  void factor_at(const Point& point) override {
+    if (!stiffness_) stiffness_.emplace(sim_);
+    cellsim::factor_at(sim_, point.x, history_, *stiffness_);
+  }
+  Eigen::VectorXd precondition(const Eigen::VectorXd& r) const override { return stiffness_->preconditioner.solve(r); }
+  void project(Eigen::Ref<Eigen::VectorXd> v) const override { drop_held_directions(hold_, v); }
+  // The state and rates at x, from the accepted history (the probes and trials moved the particles).
+  void leave_at(const Eigen::Matrix3Xd& x) { forces_at(sim_, x, history_); }
+
+ private:
+  Simulation& sim_;
+  const RotationHold* hold_;
+  WallHistory history_;
+  std::optional<RelaxationStiffness> stiffness_;
+};
+
 }  // namespace
 
-// Newton's method with a shift (Levenberg-Marquardt: the shift is a spring to the last accepted point,
-// so a shifted step is a relaxation with a viscous pull toward where the wall was) and a backtracking
-// line search on the potential: a step is halved until the potential falls by kArmijo of its first-order
-// promise F.d. The shift shrinks after a full step that fell as the model promised, grows after a
-// halved or failed one. No particle moves more than a quarter of a bond's rest length in one step. The
-// loss is the fall of the potential from start to end, less what the wall's history dissipated on the
-// way (plastic_loss_J, lamella_loss_J count that).
-Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations) {
-  Equilibrium eq;
+// Newton's method (newton_solver.hpp) on the relaxation above, no particle moving more than a quarter of a
+// bond's mean rest length in one step. The loss is the fall of the potential from start to end, less what
+// the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J count that).
+Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations, const RotationHold* hold) {
   State& s = sim.mutable_state();
   s.wall.v.setZero();
-  WallHistory history = WallHistory::of(s);
-  WallPoint now = evaluate(sim, s.wall.x, history);
-  ++eq.iterations;
-  const WallPoint start_point = now;
   double mean_rest_length_m = 0;
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
-  RelaxationStiffness stiffness(sim);
-  const NewtonPreconditioner& preconditioner = stiffness.preconditioner;
-  bool refactor = true;
-  double shift_N_m = 0;
-  while (true) {
-    eq.residual = largest_force_N(now.force) / pressure_load_N(sim);
-    if (eq.residual <= tolerance || eq.iterations >= max_iterations) break;
-    if (refactor) factor_at(sim, now.x, history, stiffness);
-    NewtonDirection step =
-        newton_direction(sim, now, history, shift_N_m, preconditioner, max_move_m, eq.iterations, max_iterations);
-    refactor = step.negative_curvature || step.products > kRefactorAfterProducts;
-    const double longest_m = longest_move_m(step.d);
-    if (longest_m > max_move_m) step.d *= max_move_m / longest_m;
-    const double first_order_J = flat(now.force).dot(step.d);
-    const double round_off_J = kRoundOff * std::abs(now.potential_J);
-    double length = 1;
-    bool accepted = false;
-    for (int halving = 0; halving <= kMaxHalvings && eq.iterations < max_iterations; ++halving, length *= 0.5) {
-      WallPoint trial = evaluate(sim, now.x + length * as_positions(step.d), history);
-      ++eq.iterations;
-      const double fall_J = now.potential_J - trial.potential_J;
-      const bool downhill = fall_J >= kArmijo * length * first_order_J;
-      // Within the potential's round-off, the largest force decides.
-      const bool flat_and_better =
-          std::abs(fall_J) <= round_off_J && largest_force_N(trial.force) < largest_force_N(now.force);
-      if (!downhill && !flat_and_better) continue;
-      if (!step.negative_curvature && halving == 0 && fall_J >= kGoodRatio * step.model_decrease_J)
-        shift_N_m = shift_N_m / kShiftGrowth < kLeastShift_N_m ? 0.0 : shift_N_m / kShiftGrowth;
-      else if (halving > 0)
-        shift_N_m = std::max(kShiftGrowth * shift_N_m, kLeastShift_N_m);
-      now = std::move(trial);
-      history = WallHistory::of(s);
-      accepted = true;
-      break;
-    }
-    if (!accepted) shift_N_m = std::max(kShiftGrowth * shift_N_m, kLeastShift_N_m);
-  }
-  forces_at(sim, now.x, history);  // the state and rates at the equilibrium (the probes moved the particles)
-  eq.loss_J = (start_point.potential_J + start_point.dissipated_J) - (now.potential_J + now.dissipated_J);
-  eq.converged = eq.residual <= tolerance;
+  WallRelaxation relaxation(sim, hold);
+  const NewtonResult result = minimise(relaxation, s.wall.x, {tolerance, max_iterations, max_move_m});
+  relaxation.leave_at(result.end.x);
+  Equilibrium eq;
+  eq.iterations = result.evaluations;
+  eq.residual = result.residual;
+  eq.converged = result.converged;
+  eq.loss_J = (result.start.potential_J + result.start.dissipated_J) - (result.end.potential_J + result.end.dissipated_J);
   return eq;
 }
 
@@ -319,8 +226,9 @@ constexpr int kMaxPeriodMoves = 40;
 // scale at an equilibrium of the wall. The lateral stress of the pairs across the period is exact there
 // (periodic_slab.hpp). The period does no work on anything outside: what its moves change of the potential
 // is the relaxation's (its loss counts the fall over every relaxation and move).
-Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_t max_iterations) {
-  Equilibrium eq = relax_wall(sim, tolerance, max_iterations);
+Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_t max_iterations,
+                                  const RotationHold* hold) {
+  Equilibrium eq = relax_wall(sim, tolerance, max_iterations, hold);
   if (!eq.converged || !sim.period_follows()) return eq;
   const State& s = sim.state();
   const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
@@ -341,7 +249,7 @@ Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_
     sim.strain_period(by);
     sim.refresh_rates();
     potential_now(sim, after_J, dissipated_after_J);
-    const Equilibrium next = relax_wall(sim, tolerance, max_iterations - eq.iterations);
+    const Equilibrium next = relax_wall(sim, tolerance, max_iterations - eq.iterations, hold);
     eq.iterations += next.iterations;
     eq.residual = next.residual;
     eq.converged = next.converged;
@@ -358,7 +266,14 @@ Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_
 
 }  // namespace
 
-void quasi_static_step(Simulation& sim) {
+void QuasiStaticScheme::start_compression() {
+  sim_.start_compression();
+  if (sim_.params().cell_rotation == kRotationHeld) rotation_hold_.emplace(sim_.state().wall.x);
+}
+
+void QuasiStaticScheme::step() {
+  Simulation& sim = sim_;
+  const RotationHold* hold = rotation_hold();
   const Params& p = sim.params();
   State& s = sim.mutable_state();
   // The loads move (the plates, the drying ramp), the wall touching a plate with it (the predictor above).
@@ -370,7 +285,7 @@ void quasi_static_step(Simulation& sim) {
   const Plates plates_before = s.plates;
   sim.advance_loads(p.dt_s);
   move_touching_particles_with_plates(sim, plates_before);
-  if (const RotationHold* hold = sim.rotation_hold()) hold->project(s.wall.x);  // back onto C = 0: the least move
+  if (hold) hold->project(s.wall.x);  // back onto C = 0: the least move
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
   const EnergyValues stored_at_start = sim.energy_terms_now();
   const double jump_J = stored_energy_J(stored_at_start) - stored_energy_J(stored_before);
@@ -381,7 +296,7 @@ void quasi_static_step(Simulation& sim) {
 
   CavityFluid& cavity = sim.cavity_fluid();
   cavity.begin_increment(s, sim.fluid_context(), p.dt_s);
-  const Equilibrium eq = relax_wall_and_period(sim, p.equilibrium_tolerance, p.relaxation_max_iterations);
+  const Equilibrium eq = relax_wall_and_period(sim, p.equilibrium_tolerance, p.relaxation_max_iterations, hold);
   const EnergyValues& power_at_end_W = sim.power_W();
   double loads_J = 0;
   for (EnergyTermId load : {kPlateWork, kDrive}) {

@@ -5,12 +5,9 @@
 // speed and L_p keep their meaning: a step is dt of physical time, a sequence of equilibria.
 //
 // The relaxation minimises the potential (the wall's stored energy, plates and contacts included, less
-// the fluid pressure's work along the volume's path in the increment) by Newton's method: conjugate
-// gradients on differences of forces, preconditioned with the wall's stiffness, its cells' pressures and a
-// tissue's contacts and lamella (newton_preconditioner.hpp), factored afresh where the last step's
-// gradients struggled (a fold);
-// a shift (Levenberg-Marquardt) where the model fails; a step along a direction of negative curvature
-// where a fold forms (Steihaug); a backtracking line search on the potential. Equilibrium: the largest
+// the fluid pressure's work along the volume's path in the increment) by Newton's method
+// (newton_solver.hpp), preconditioned with the wall's stiffness, its cells' pressures and a tissue's
+// contacts and lamella (newton_preconditioner.hpp). Equilibrium: the largest
 // force on a wall particle below time.equilibrium_tolerance x its pressure load, max(P_T0, |P|) x the
 // mean area a wall particle owns; the wall is then at rest (no kinetic energy). Each step's test and
 // force evaluations are recorded (relaxation_residual, relaxation_evaluations).
@@ -25,6 +22,10 @@
 // A lone cell's rigid rotation is held in compression (compression.cell_rotation, rotation_hold.hpp):
 // its forces, moves and products are projected onto the hold, and its equilibrium is the projected one.
 #include <cstdint>
+#include <optional>
+
+#include "engine/rotation_hold.hpp"
+#include "engine/scheme.hpp"
 
 namespace cellsim {
 
@@ -38,12 +39,25 @@ struct Equilibrium {
   bool period_unbalanced = false;  // a periodic slab's period did not reach zero lateral stress
 };
 
-// Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations.
-Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations);
+// Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations; a held
+// cell's on its hold (null: none).
+Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations,
+                       const RotationHold* hold = nullptr);
 
-// One quasi-static step. Throws NumericalFailure (naming the step) if the wall does not reach
-// equilibrium within time.relaxation_max_iterations, or a periodic slab's following period zero lateral
-// stress within its moves.
-void quasi_static_step(Simulation& sim);
+// The scheme: its steps, and from the compression's start its hold on a lone cell's rotation
+// (compression.cell_rotation = held).
+class QuasiStaticScheme final : public Scheme {
+ public:
+  explicit QuasiStaticScheme(Simulation& sim) : sim_(sim) {}
+  // One step. Throws NumericalFailure (naming the step) if the wall does not reach equilibrium within
+  // time.relaxation_max_iterations, or a periodic slab's following period zero lateral stress within its moves.
+  void step() override;
+  void start_compression() override;
+  const RotationHold* rotation_hold() const { return rotation_hold_ ? &*rotation_hold_ : nullptr; }
+
+ private:
+  Simulation& sim_;
+  std::optional<RotationHold> rotation_hold_;
+};
 
 }  // namespace cellsim

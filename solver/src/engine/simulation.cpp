@@ -24,25 +24,6 @@ namespace {
 // Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
 constexpr double kSkinOverH0 = 0.15;
 
-// The middle-lamella law from the case (lamella_law.hpp). A fracture energy too small to reach past
-// the elastic limit (G_f < F_max delta_0 / (2 a_w)) would soften over a negative distance: refused.
-LamellaLaw lamella_law(const Params& p, double wall_particle_area_m2) {
-  LamellaLaw law;
-  law.stiffness_N_m = p.lamella_stiffness_N_m;
-  law.peak_force_N = p.lamella_strength_Pa * wall_particle_area_m2;
-  law.break_opening_m =
-      lamella_break_opening_m(p.lamella_fracture_energy_J_m2, wall_particle_area_m2, law.peak_force_N);
-  if (p.lamella_fracture_energy_J_m2 > 0 && law.peak_force_N > 0 && law.break_opening_m <= law.elastic_limit_m()) {
-    const double least = law.peak_force_N * law.elastic_limit_m() / (2.0 * wall_particle_area_m2);
-    std::ostringstream msg;
-    msg << "tissue.lamella_fracture_energy_J_m2 = " << p.lamella_fracture_energy_J_m2
-        << " is less than the elastic energy a bond holds at its peak tension (" << least
-        << " J/m^2 with this strength and stiffness): give more, or 0 for a brittle bond";
-    throw InputError(msg.str());
-  }
-  return law;
-}
-
 // The case's fluid model (fluid_model.hpp, fluid.model): SPH, with either coupling (coupling.model), or the
 // closed cell of one pressure.
 std::unique_ptr<FluidModel> fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors) {
@@ -77,7 +58,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
       cells_(tissue.cells),
       lamella_(tissue.lamella),
       contact_law_{p.wall_gap_m.value_or(p.thickness_m), p.contact_stiffness_N_m,
-                   lamella_law(p, tissue.wall_particle_area_m2)},
+                   make_lamella_law(p, tissue.wall_particle_area_m2)},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
       fluid_(fluid_model(p, tissue.cells, factors)),
@@ -421,7 +402,6 @@ void Simulation::start_compression() {
   plates.top_start_z_m = plates.top_z_m = z.maxCoeff() + p_.plate_range_m + p_.plate_gap_m;
   plates.start_time_s = s_.time_s;
   plates.contact_height_m = cell_height_m(s_.wall.x);
-  if (p_.time_scheme == kQuasiStatic && p_.cell_rotation == kRotationHeld) rotation_hold_.emplace(s_.wall.x);
   // A periodic slab's footprint is its period (model.md §10b): its cells overhang the period's edges.
   plates.footprint_m2 = s_.box.periodic() ? s_.box.area_m2() : convex_hull_area_2d(s_.wall.x.topRows<2>());
   plates.first_contact_top_z_m = std::nan("");
@@ -435,60 +415,7 @@ void Simulation::start_compression() {
   fluid_->start_compression(s_, fluid_context());
 }
 
-void Simulation::check_restorable(const State& saved) const {
-  if (saved.fluid.size() != s_.fluid.size() || saved.wall.size() != s_.wall.size() ||
-      saved.lamella_intact.size() != s_.lamella_intact.size())
-    throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
-                     std::to_string(saved.wall.size()) + " wall particles and " +
-                     std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
-                     std::to_string(s_.fluid.size()) + ", " + std::to_string(s_.wall.size()) + " and " +
-                     std::to_string(s_.lamella_intact.size()));
-  if (saved.box.periodic() != s_.box.periodic())
-    throw InputError(std::string("saved state is of a ") + (saved.box.periodic() ? "periodic" : "non-periodic") +
-                     " tissue; the case builds a " + (s_.box.periodic() ? "periodic" : "non-periodic") +
-                     " one (tissue.lateral)");
-  // Every per-particle and per-bond array as long as its particles or bonds (a file cut or edited
-  // by hand can hold one shorter than the others; found by the fuzzer, issue 51).
-  const auto same = [](const char* what, Eigen::Index have, Eigen::Index want) {
-    if (have != want)
-      throw InputError(std::string("saved state has ") + std::to_string(have) + " " + what + "; the case builds " +
-                       std::to_string(want));
-  };
-  const auto& f = saved.fluid;
-  const auto& w = saved.wall;
-  same("fluid velocities", f.v.cols(), f.x.cols());
-  same("fluid masses", f.m.size(), f.x.cols());
-  same("fluid densities", f.rho.size(), f.x.cols());
-  same("wall velocities", w.v.cols(), w.x.cols());
-  same("lamella openings", static_cast<Eigen::Index>(saved.lamella_peak_opening_m.size()),
-       static_cast<Eigen::Index>(saved.lamella_intact.size()));
-  same("closed-cell fluid masses", static_cast<Eigen::Index>(saved.cavity_mass_kg.size()),
-       static_cast<Eigen::Index>(s_.cavity_mass_kg.size()));
-  for (double mass : saved.cavity_mass_kg)
-    if (!(mass > 0) || !std::isfinite(mass)) throw InputError("saved state has a closed-cell fluid mass that is not positive");
-  if (!saved.bond_plastic_elongation_m.empty())  // empty: saved before the wall could yield
-    same("wall bonds", static_cast<Eigen::Index>(saved.bond_plastic_elongation_m.size()),
-         static_cast<Eigen::Index>(mesh_.bonds.size()));
-  if (!fluid_is_sound(f, 0, f.size()) || !wall_is_finite(w, 0, w.size()))
-    throw InputError("saved state has a non-finite position or velocity, or a density or mass that is not positive");
-  const auto finite = [](const std::vector<double>& v) {
-    return all_finite(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
-  };
-  if (!finite(saved.lamella_peak_opening_m) || !finite(saved.bond_plastic_elongation_m) ||
-      !finite(saved.plates.start_layer_height_m))
-    throw InputError("saved state has a non-finite lamella opening, plastic elongation or layer height");
-  const bool scalars_sound = std::isfinite(saved.time_s) && saved.smoothing_length_m > 0 &&
-                             saved.initial_fluid_mass_kg > 0 && saved.reference_diameter_m > 0 && w.mass_kg > 0 &&
-                             std::isfinite(saved.smoothing_length_m) && std::isfinite(saved.initial_fluid_mass_kg) &&
-                             std::isfinite(saved.reference_diameter_m) && std::isfinite(w.mass_kg) &&
-                             std::isfinite(saved.box.length_x_m) && std::isfinite(saved.box.length_y_m);
-  if (!scalars_sound)
-    throw InputError("saved state has a time, smoothing length, mass, diameter or period that is not finite (or "
-                     "not positive)");
-}
-
 void Simulation::restore(const State& saved) {
-  check_restorable(saved);
   s_ = saved;
   if (s_.bond_plastic_elongation_m.empty())  // saved before the wall could yield
     s_.bond_plastic_elongation_m.assign(mesh_.bonds.size(), 0.0);

@@ -6,7 +6,6 @@
 // keeps the wall, the contacts between cells, the plates and the order of the step.
 #include <cmath>
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "core/params.hpp"
@@ -16,7 +15,6 @@
 #include "engine/fluid_model.hpp"
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
-#include "engine/rotation_hold.hpp"
 #include "engine/sph_fluid.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/heterogeneity.hpp"
@@ -48,10 +46,8 @@ class Simulation {
   void strain_period(const Eigen::Vector2d& strain);
   void finish_step();
   void start_compression();     // switches L_p and places the plates (model.md §6)
-  void restore(const State& saved);  // continue from a saved state (same case geometry)
-  // Throws InputError unless `saved` fits this case: its particles, bonds and period, every array of
-  // them as long, and every value finite (positive densities and masses). restore() checks it too.
-  void check_restorable(const State& saved) const;
+  // Continue from a saved state of this case (one read from a file: check_restorable, io/state_io.hpp).
+  void restore(const State& saved);
   double nominal_strain() const;     // (H_c - H) / H_c during compression, 0 before
 
   const State& state() const { return s_; }
@@ -110,9 +106,6 @@ class Simulation {
   const std::vector<LamellaBond>& lamella() const { return lamella_; }
   const CellContactLaw& contact_law() const { return contact_law_; }
   const WallSurface& surface() const { return surface_; }
-  // The hold on a quasi-static lone cell's rotation (rotation_hold.hpp), from the compression's start;
-  // null without one.
-  const RotationHold* rotation_hold() const { return rotation_hold_ ? &*rotation_hold_ : nullptr; }
 
  private:
   // The constructor's work, with the heterogeneous properties' factors drawn once (they set the bond law
@@ -151,7 +144,6 @@ class Simulation {
   double fluid_wall_cutoff_m_ = 0;  // of the wall-fluid pair list, at the current h (the fluid's choice)
   PlateLaw plate_law_;
   PlateMotion plate_motion_;
-  std::optional<RotationHold> rotation_hold_;
   BondLaw bond_law_;
 
   // Rates at the current positions.

@@ -1,8 +1,11 @@
 #include "io/state_io.hpp"
 
+#include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "core/errors.hpp"
+#include "engine/step_checks.hpp"
 #include "io/h5_eigen.hpp"
 
 namespace cellsim {
@@ -178,6 +181,58 @@ SavedRun read_saved_run(const std::string& path) {
     throw InputError("--from '" + path + "' cannot be read as a cellsim result: " + e.what());
   }
   return run;
+}
+
+void check_restorable(const State& saved, const State& built, std::size_t wall_bonds) {
+  if (saved.fluid.size() != built.fluid.size() || saved.wall.size() != built.wall.size() ||
+      saved.lamella_intact.size() != built.lamella_intact.size())
+    throw InputError("saved state has " + std::to_string(saved.fluid.size()) + " fluid and " +
+                     std::to_string(saved.wall.size()) + " wall particles and " +
+                     std::to_string(saved.lamella_intact.size()) + " lamella bonds; the case builds " +
+                     std::to_string(built.fluid.size()) + ", " + std::to_string(built.wall.size()) + " and " +
+                     std::to_string(built.lamella_intact.size()));
+  if (saved.box.periodic() != built.box.periodic())
+    throw InputError(std::string("saved state is of a ") + (saved.box.periodic() ? "periodic" : "non-periodic") +
+                     " tissue; the case builds a " + (built.box.periodic() ? "periodic" : "non-periodic") +
+                     " one (tissue.lateral)");
+  // Every per-particle and per-bond array as long as its particles or bonds (a file cut or edited
+  // by hand can hold one shorter than the others; found by the fuzzer, issue 51).
+  const auto same = [](const char* what, Eigen::Index have, Eigen::Index want) {
+    if (have != want)
+      throw InputError(std::string("saved state has ") + std::to_string(have) + " " + what + "; the case builds " +
+                       std::to_string(want));
+  };
+  const auto& f = saved.fluid;
+  const auto& w = saved.wall;
+  same("fluid velocities", f.v.cols(), f.x.cols());
+  same("fluid masses", f.m.size(), f.x.cols());
+  same("fluid densities", f.rho.size(), f.x.cols());
+  same("wall velocities", w.v.cols(), w.x.cols());
+  same("lamella openings", static_cast<Eigen::Index>(saved.lamella_peak_opening_m.size()),
+       static_cast<Eigen::Index>(saved.lamella_intact.size()));
+  same("closed-cell fluid masses", static_cast<Eigen::Index>(saved.cavity_mass_kg.size()),
+       static_cast<Eigen::Index>(built.cavity_mass_kg.size()));
+  for (double mass : saved.cavity_mass_kg)
+    if (!(mass > 0) || !std::isfinite(mass)) throw InputError("saved state has a closed-cell fluid mass that is not positive");
+  if (!saved.bond_plastic_elongation_m.empty())  // empty: saved before the wall could yield
+    same("wall bonds", static_cast<Eigen::Index>(saved.bond_plastic_elongation_m.size()),
+         static_cast<Eigen::Index>(wall_bonds));
+  if (!fluid_is_sound(f, 0, f.size()) || !wall_is_finite(w, 0, w.size()))
+    throw InputError("saved state has a non-finite position or velocity, or a density or mass that is not positive");
+  const auto finite = [](const std::vector<double>& v) {
+    return all_finite(Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+  };
+  if (!finite(saved.lamella_peak_opening_m) || !finite(saved.bond_plastic_elongation_m) ||
+      !finite(saved.plates.start_layer_height_m))
+    throw InputError("saved state has a non-finite lamella opening, plastic elongation or layer height");
+  const bool scalars_sound = std::isfinite(saved.time_s) && saved.smoothing_length_m > 0 &&
+                             saved.initial_fluid_mass_kg > 0 && saved.reference_diameter_m > 0 && w.mass_kg > 0 &&
+                             std::isfinite(saved.smoothing_length_m) && std::isfinite(saved.initial_fluid_mass_kg) &&
+                             std::isfinite(saved.reference_diameter_m) && std::isfinite(w.mass_kg) &&
+                             std::isfinite(saved.box.length_x_m) && std::isfinite(saved.box.length_y_m);
+  if (!scalars_sound)
+    throw InputError("saved state has a time, smoothing length, mass, diameter or period that is not finite (or "
+                     "not positive)");
 }
 
 }  // namespace cellsim

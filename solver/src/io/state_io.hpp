@@ -1,6 +1,7 @@
 #pragma once
 // Saving and loading the state a run can continue from (/state in a result file), and the time
 // series already recorded (so a continued run's file holds the whole history).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,10 @@ struct SavedRun {
 
 // Reads a complete result file; throws InputError if it is missing, incomplete or malformed.
 SavedRun read_saved_run(const std::string& path);
+
+// Throws InputError unless a saved state fits the case that `built` is the state of (with wall_bonds
+// bonds): its particles, bonds and period, every array of them as long, and every value finite (positive
+// densities and masses). A run checks a state it continues from before it writes anything.
+void check_restorable(const State& saved, const State& built, std::size_t wall_bonds);
 
 }  // namespace cellsim

@@ -8,6 +8,8 @@
 // delta_f <= delta_0 (G_f = 0) is the brittle bond: it breaks when its tension exceeds F_max.
 #include <algorithm>
 
+#include "core/params.hpp"
+
 namespace cellsim {
 
 struct LamellaLaw {
@@ -56,5 +58,10 @@ struct LamellaLaw {
 inline double lamella_break_opening_m(double fracture_energy_J_m2, double wall_particle_area_m2, double peak_force_N) {
   return peak_force_N > 0 ? 2.0 * fracture_energy_J_m2 * wall_particle_area_m2 / peak_force_N : 0.0;
 }
+
+// The law of the case (tissue.lamella_*), for wall particles that own wall_particle_area_m2 each. Throws
+// InputError for a fracture energy too small to reach past the elastic limit (G_f < F_max delta_0 / (2 a_w):
+// it would soften over a negative distance).
+LamellaLaw make_lamella_law(const Params& p, double wall_particle_area_m2);
 
 }  // namespace cellsim
