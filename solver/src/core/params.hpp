@@ -11,7 +11,7 @@ using Choice = int;  // the index of a choice key's name (case_schema.cpp lists 
 // coupling.model (model.md §4): how the wall and the fluid push on each other.
 enum CouplingModel : Choice { kLennardJones = 0, kPressure = 1 };
 
-// fluid.model (model.md §9): the cell fluid as SPH particles (the paper's), or as a closed cell of one
+// fluid.model (model.md §11): the cell fluid as SPH particles (the paper's), or as a closed cell of one
 // uniform pressure (engine/cavity_fluid.hpp), the quasi-static reference.
 enum FluidModelChoice : Choice { kSphFluid = 0, kCavityFluid = 1 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// The cell fluid as a closed cell of one uniform pressure (fluid.model = cavity; model.md §9): per cell a
+// The cell fluid as a closed cell of one uniform pressure (fluid.model = cavity; model.md §11): per cell a
 // mass M_f (State::cavity_mass_kg, Eq 11 through the cell's wall area), filling the volume the wall
 // encloses at density M_f / V, its pressure Eq 7's, pushing on the wall as P dV/dx_k
 // (physics/cavity_pressure.hpp). No particles: no viscosity, no coupling layer, no closures (its

@@ -110,7 +110,7 @@ std::vector<ParamSpec> build_specs() {
       choice("fluid.model", &P::fluid_model, {"sph", "cavity"},
              "the cell fluid: sph (particles, the paper's) or cavity (a closed cell of one uniform pressure, P from "
              "Eq 7 at its mass / the enclosed volume, pushing on the wall as P dV/dx; no particles: the SPH-only keys "
-             "are ignored, with a warning)", "docs/model.md §9, engine/cavity_fluid.hpp"),
+             "are ignored, with a warning)", "docs/model.md §11, engine/cavity_fluid.hpp"),
       real("fluid.viscosity_Pa_s", "Pa s", 1.0, &P::viscosity_Pa_s, 0.1, 0, true, 1e4, true,
            "dynamic viscosity mu", "Eq 4"),
       real("fluid.bulk_modulus_MPa", "MPa", 1e6, &P::bulk_modulus_Pa, 20, 0, false, 1e5, true,
@@ -269,7 +269,7 @@ std::vector<ParamSpec> build_specs() {
       choice("time.scheme", &P::time_scheme, {"dynamic", "quasi_static"},
              "dynamic: the leapfrog of time.dt_ns; quasi_static (fluid.model = cavity only): each step of time.dt_ns "
              "moves the plates and the drying ramp and integrates Eq 11 over it, then relaxes the wall to "
-             "equilibrium", "docs/model.md §9, engine/quasi_static.hpp"),
+             "equilibrium", "docs/model.md §11, engine/quasi_static.hpp"),
       real("time.equilibrium_tolerance", "1", 1.0, &P::equilibrium_tolerance, 1e-3, 0, false, 1, true,
            "a closed cell's relaxations (quasi_static steps, the settle, the volumetric modulus): one ends when the "
            "largest force on a wall particle is below this fraction of its pressure load, max(P_T0, |P|) x the mean "

@@ -1,5 +1,5 @@
 #pragma once
-// A closed cell of one uniform pressure (model.md §9, fluid.model = cavity): its fluid of mass M fills
+// A closed cell of one uniform pressure (model.md §11, fluid.model = cavity): its fluid of mass M fills
 // the volume V its wall encloses, at density M / V and Eq 7's pressure. The pressure pushes on wall
 // particle k with P dV/dx_k, the exact gradient of the fluid's stored energy M e(M/V) at fixed M
 // (de = P / rho^2 drho: d(M e)/dV = -P), so the energy account closes.
