@@ -1,11 +1,9 @@
 """Tidy tables from the runs: one row per (case, record), and one row per case with summary
 metrics. Every case parameter is a column ('cell.turgor_kPa', ...), and so is every axis."""
-import json
-import pathlib
-
 import numpy as np
 import pandas as pd
 
+from analysis.quantities import ENERGY_TERMS
 from analysis.results import flatten, resolved_case, run_summary, timeseries
 
 STRAINS = (0.05, 0.10, 0.15)  # nominal strains at which the stress is reported
@@ -114,10 +112,7 @@ def load_partition(compression, window=LOAD_WINDOW):
             w["load_backstop_N"].sum() / force if "load_backstop_N" in w and force else np.nan)
 
 
-# The energy account's terms, the solver's own table (`cellsim energy-terms`, kept in config/schema by
-# scripts/update-docs): the series of what flowed in or out, in the solver's order.
-ENERGY_TERMS = json.loads((pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" /
-                           "energy_terms.json").read_text())
+# The series of what flowed in or out of the energy account, in the solver's order.
 ENERGY_FLOWS = tuple(term["column"] for term in ENERGY_TERMS if term["role"] != "stored")
 
 

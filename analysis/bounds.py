@@ -52,19 +52,19 @@ def quasi_static_table(summary, study="rate_bounds"):
 
 
 def drained_table(summary, study="drainage"):
-    """Per dryness and compression L_p: the stresses, their change against the closed cell (the paper's
+    """Per dryness and compression L_p: the stresses, their change against the sealed cell (the paper's
     L_p, 1e-12; empty if it did not run), and the share of the cell's water that left by strain 0.10."""
     rows = rows_of(summary, study)
     out = []
     for x in sorted(rows["dryness"].unique(), reverse=True):
         at_x = rows[np.isclose(rows["dryness"], x)].sort_values(LP)
-        closed = at_x[np.isclose(at_x[LP], REAL_LP, rtol=1e-9, atol=0)]
+        sealed = at_x[np.isclose(at_x[LP], REAL_LP, rtol=1e-9, atol=0)]
         for _, r in at_x.iterrows():
             entry = {"X/X0": x, "compression L_p [m/(s Pa)]": r[LP]}
             for strain in STRAINS:
                 entry[f"stress at {strain:.2f} [kPa]"] = stress(r, strain)
-                entry[f"change at {strain:.2f}"] = (stress(r, strain) / stress(closed.iloc[0], strain) - 1
-                                                    if len(closed) else np.nan)
+                entry[f"change at {strain:.2f}"] = (stress(r, strain) / stress(sealed.iloc[0], strain) - 1
+                                                    if len(sealed) else np.nan)
             entry[f"water lost by {REFERENCE_STRAIN:.2f} [%]"] = 100 * r[f"mass_lost_at_{REFERENCE_STRAIN:.2f}"]
             entry["drains like a real cell in [s]"] = real_drainage_time_s(r)
             out.append(entry)
@@ -154,12 +154,12 @@ def slow_end(summary, drained):
 
 
 def slow_end_table(summary):
-    """Per dryness: the quasi-static closed cell, closed and drained, at STRAINS [kPa]."""
-    closed, drained = slow_end(summary, False), slow_end(summary, True)
+    """Per dryness: the quasi-static closed cell, sealed and drained, at STRAINS [kPa]."""
+    sealed, drained = slow_end(summary, False), slow_end(summary, True)
     out = []
-    for x in sorted(set(closed) | set(drained), reverse=True):
+    for x in sorted(set(sealed) | set(drained), reverse=True):
         entry = {"X/X0": x}
-        for name, values in (("closed", closed), ("drained (L_p 1e-6)", drained)):
+        for name, values in (("sealed", sealed), ("drained (L_p 1e-6)", drained)):
             for k, e in enumerate(STRAINS):
                 entry[f"quasi-static, {name}, at {e:.2f} [kPa]"] = values[x][k] if x in values else np.nan
         out.append(entry)
@@ -175,7 +175,7 @@ def write_page(path, config, summary, figure_files):
     if not slow.empty:
         parts += ["<h3>Their slow end: the closed cell, quasi-static (study bounds_slow_end)</h3>",
                   "<p>One uniform pressure per cell at equilibrium at every plate step (K 20 MPa, the SPH cells'): "
-                  "what the rate study's curves tend to as the plate slows, closed and drained.</p>", frame_table(slow)]
+                  "what the rate study's curves tend to as the plate slows, sealed and drained.</p>", frame_table(slow)]
     parts.append(figure_list(config, figure_files, here))
     html_page.write_page(path, "cellsim: rate and drainage bounds", parts)
 

@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from analysis.matrix import target_of
-from analysis import html_page
+from analysis import html_page, matrix
 from analysis.aggregate import rows_of
 
 # (summary column, heading): what each case reports.
@@ -245,13 +245,30 @@ def bulk_modulus_note(table):
     return notes
 
 
+def resolution_words(config):
+    """The levels' particle counts and wall spacing over the lowest level's, from the resolution axis
+    (its coupled cell sizes), e.g. "fluid count x1, x2.83, x8 and wall count x1, x2, x4: the wall's
+    particle spacing x1, x0.707, x0.5 from level 1 to level 3"."""
+    axis = config["axes"].get("resolution")
+    if not axis:
+        return "the particle count"
+    base = {a: matrix.base_value(config, a) for a in config["axes"]}
+    levels = sorted({int(axis["base_value"]), *(int(level) for level in axis.get("coupled", {}))})
+    cells = [matrix.build(config, {**base, "resolution": level})[0]["cell"] for level in levels]
+    fluid = ", ".join(f"x{c['n_fluid'] / cells[0]['n_fluid']:.3g}" for c in cells)
+    wall = ", ".join(f"x{c['n_wall'] / cells[0]['n_wall']:.3g}" for c in cells)
+    spacing = ", ".join(f"x{(cells[0]['n_wall'] / c['n_wall']) ** 0.5:.3g}" for c in cells)
+    return (f"fluid count {fluid} and wall count {wall}: the wall's particle spacing {spacing} from level "
+            f"{levels[0]} to level {levels[-1]}")
+
+
 def write_page(path, config, table, figure_files, compared=None, target="convergence", summary=None, anchors=None):
     """summary: the target's cases, for the energy warning (html_page.energy_box); anchors: the analytic
     anchors' table (anchors.anchor_table)."""
     here = pathlib.Path(path).parent
     parts = ["<h1>Convergence: how much of a curve is the particle count</h1>",
-             "<p>Each convergence study refines one axis: the resolution (fluid count x1, x2.83, x8 and wall count "
-             "x1, x2, x4: the particle spacing halves from level 1 to level 3; r0 and the fill gap follow the mesh, and "
+             f"<p>Each convergence study refines one axis: the resolution ({resolution_words(config)}; r0 and the "
+             "fill gap follow the mesh, and "
              "h0 follows it at a fixed h0/dx), the time step, or sweeps a parameter (h0/dx, the fluid's bulk modulus "
              "K, the plate speed). Changes are relative to the previous case; the order p is "
              "log(|f2 - f1| / |f3 - f2|) / log(r), with r the spacing ratio (sqrt 2), where the changes shrink. "

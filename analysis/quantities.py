@@ -1,5 +1,7 @@
 """How the solver's time series are shown: label and the factor from SI to the unit shown.
 The names are those of `cellsim outputs` (tests/test_analysis.py keeps them in step)."""
+import json
+import pathlib
 
 QUANTITIES = {
     "time_s": ("time [us]", 1e6),
@@ -45,35 +47,27 @@ QUANTITIES = {
     "period_x_m": ("period along x [um]", 1e6),
     "period_y_m": ("period along y [um]", 1e6),
     "lateral_stress_Pa": ("lateral stress [kPa]", 1e-3),
-    # the energy account (docs/model.md §8)
-    "internal_energy_J": ("fluid internal energy [nJ]", 1e9),
-    "wall_stiff_energy_J": ("wall stiff-spring energy [nJ]", 1e9),
-    "wall_contraction_energy_J": ("wall contraction-spring energy [nJ]", 1e9),
-    "wall_bending_energy_J": ("wall bending energy [nJ]", 1e9),
-    "coupling_energy_J": ("wall-fluid LJ energy [nJ]", 1e9),
-    "plate_energy_J": ("plate-spring energy [nJ]", 1e9),
-    "contact_energy_J": ("energy of the contacts between cells [nJ]", 1e9),
-    "lamella_energy_J": ("energy of the middle lamella's bonds [nJ]", 1e9),
+    # the energy account (docs/model.md §8): its terms follow below, from the solver's table
     "stored_energy_J": ("stored energy [nJ]", 1e9),
-    "plate_work_J": ("plate work [nJ]", 1e9),
-    "viscous_loss_J": ("viscous loss [nJ]", 1e9),
-    "damping_loss_J": ("wall damping loss [nJ]", 1e9),
-    "mass_transfer_energy_J": ("energy carried by mass transfer [nJ]", 1e9),
-    "closure_energy_J": ("energy of the wall-pressure closure [nJ]", 1e9),
-    "drive_energy_J": ("energy put in by the drying ramp [nJ]", 1e9),
-    "density_diffusion_energy_J": ("energy put in by the density diffusion [nJ]", 1e9),
-    "backstop_work_J": ("work of the pressure coupling's backstop [nJ]", 1e9),
-    "volume_closure_energy_J": ("energy of the volume closure [nJ]", 1e9),
-    "plastic_loss_J": ("dissipated by the wall's plastic flow [nJ]", 1e9),
-    "lamella_loss_J": ("dissipated by the middle lamella [nJ]", 1e9),
-    "relaxation_loss_J": ("dissipated by the quasi-static relaxation [nJ]", 1e9),
-    "period_loss_J": ("dissipated by a periodic slab's period as it follows [nJ]", 1e9),
     "wall_plastic_strain_mean": ("mean plastic strain of the wall's bonds", 1.0),
     "wall_plastic_strain_max": ("largest plastic strain of a wall bond", 1.0),
     "energy_residual_J": ("energy residual [nJ]", 1e9),
     "relaxation_residual": ("largest force left by the relaxation / pressure load", 1.0),
     "relaxation_evaluations": ("force evaluations of the relaxation", 1.0),
 }
+
+# The energy account's terms, the solver's own table (`cellsim energy-terms`, kept in config/schema by
+# scripts/update-docs), in the solver's order; each term's series is labelled by the table's words.
+ENERGY_TERMS = json.loads((pathlib.Path(__file__).resolve().parents[1] / "config" / "schema" /
+                           "energy_terms.json").read_text())
+
+
+def energy_term_label(term):
+    """A stored term is an energy ("wall bending energy"); a flow or a loss is named by what it is."""
+    return f"{term['label']} energy [nJ]" if term["role"] == "stored" else f"{term['label']} [nJ]"
+
+
+QUANTITIES.update({term["column"]: (energy_term_label(term), 1e9) for term in ENERGY_TERMS if term["column"]})
 
 # Derived by analysis/aggregate.py from the solver's series, for every run alike.
 DERIVED = {

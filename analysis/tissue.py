@@ -9,12 +9,19 @@ import numpy as np
 import pandas as pd
 
 from analysis import html_page, matrix
-from analysis.bounds import REAL_LP  # a closed cell's compression L_p; any other drains it
+from analysis.aggregate import MODULUS_WINDOW  # the strains the moduli are fitted over
+from analysis.bounds import REAL_LP  # a sealed cell's compression L_p; any other drains it
 from analysis.figures.modulus import reference_modulus_MPa  # the fit the figures draw
 from analysis.references import load as load_reference
 from analysis.results import open_result
 
 STRAINS = ("0.05", "0.10")
+
+
+def lp_words(lp):
+    """A permeability as a reader writes it: 1e-12, 1e-6 [m/(s Pa)]."""
+    mantissa, exponent = f"{lp:e}".split("e")
+    return f"{mantissa.rstrip('0').rstrip('.')}e{int(exponent)}"
 
 
 def broken_bonds_by_face(path):
@@ -177,7 +184,7 @@ def conjecture_table(frame, apple_kPa):
     for _, r in slabs.iterrows():
         fresh = np.isclose(r["X/X0"], 1.0)
         line = {"numerics": r["numerics"], "X/X0": r["X/X0"], "sides": r["sides"], "plate [m/s]": r["plate [m/s]"],
-                "drainage": "closed" if np.isclose(r["compression L_p"], REAL_LP, rtol=1e-9, atol=0) else "drained"}
+                "drainage": "sealed" if np.isclose(r["compression L_p"], REAL_LP, rtol=1e-9, atol=0) else "drained"}
         for e in STRAINS:
             line[f"x single cell at {e}"] = r[f"x single cell at {e}"]
         line["modulus (gauge) x single cell"] = r["modulus x single cell"]
@@ -265,7 +272,7 @@ def conjecture_paragraph(compared, frame, apple):
                    if measured else "no measured modulus")
     if len(slab) and len(cell):
         s, c = slab.iloc[0], cell.iloc[0]
-        text.append(f"Fresh, closed and confined ({s['numerics']}), the slab's modulus over its interior strain is "
+        text.append(f"Fresh, sealed and confined ({s['numerics']}), the slab's modulus over its interior strain is "
                     f"{s['modulus, gauge [MPa]']:.2f} MPa and over the plates' strain {s['modulus, nominal [MPa]']:.2f} "
                     f"MPa, the single cell's {c['modulus, gauge [MPa]']:.2f} MPa, beside {apple_words}.")
     near = texture_analyser_case(frame)
@@ -333,12 +340,15 @@ def write_page(path, config, frame, figure_files, target="tissue", summary=None)
     apple = reference_moduli(config, references)
     if len(moduli):
         parts.append("<h2>Apparent modulus at small strain</h2>")
+        low, high = MODULUS_WINDOW
+        drained = ", ".join(lp_words(lp) for lp in sorted(set(frame["compression L_p"]))
+                            if not np.isclose(lp, REAL_LP, rtol=1e-9, atol=0)) or "none"
         parts.append("<p>The slope of stress (force over the footprint at compression start; a periodic slab's "
-                     "footprint is its period) against strain, fitted over strains 0.01-0.05, in MPa: over the "
-                     "plates' nominal strain / over the interior cells' strain (a tissue's gauge between the "
+                     f"footprint is its period) against strain, fitted over strains {low:g}-{high:g}, in MPa: over "
+                     "the plates' nominal strain / over the interior cells' strain (a tissue's gauge between the "
                      "centroid planes of its layers away from the plates, model.md §10c; one cell's nominal "
-                     "strain). Closed: compression L_p 1e-12; drained: 1e-6 (docs/model-closures.md, the drained "
-                     "bound).</p>")
+                     f"strain). Sealed: compression L_p {lp_words(REAL_LP)}; drained: {drained} "
+                     "(docs/model-closures.md, the drained bound).</p>")
         parts.append(html_page.frame_table(moduli))
         if apple:
             rows = pd.DataFrame([{"fresh apple tissue": label, "reconstructed curve fitted alike [MPa]": fitted,

@@ -364,7 +364,7 @@ def test_anchor_runs_are_the_anchor_studies_and_the_ladders_fresh_cells(config):
 def test_tissue_target_runs_closed_cell_slabs_beside_their_cells_and_the_bounds_that_fit(config):
     cases = matrix.expand(config)
     tissue_cases = matrix.target_cases(config, cases, "tissue")
-    # 12 slabs, 6 single cells (3 dryness x closed and drained), and each bound's fresh slab and cell.
+    # 12 slabs, 6 single cells (3 dryness x sealed and drained), and each bound's fresh slab and cell.
     assert len(tissue_cases) == 12 + 6 + 2 + 2 + 2
     assert all(cases[n].case["fluid"]["model"] == "cavity" and cases[n].case["time"]["scheme"] == "dynamic"
                and cases[n].case["compression"]["plate_speed_m_s"] == 1 for n in tissue_cases)
@@ -536,7 +536,7 @@ def test_conjecture_is_answered_from_the_slabs_beside_their_single_cell(tmp_path
                  "x single cell at 0.05": np.nan})]
     compared = conjecture_table(pd.DataFrame(rows), apple)
     assert list(compared["sides"]) == ["confined", "unconfined", "confined"]
-    assert list(compared["drainage"]) == ["closed", "drained", "drained"]
+    assert list(compared["drainage"]) == ["sealed", "drained", "drained"]
     assert list(compared["x apple at 0.05"]) == ["10.0-10.0", "2.0-2.0", "-"]  # fresh cells only
     assert list(compared["x apple at 0.10"]) == ["20.0-20.0", "3.0-3.0", "-"]
     answer = conjecture_answer(compared)

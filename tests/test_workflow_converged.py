@@ -77,10 +77,10 @@ def test_the_bounds_are_their_own_target_and_a_drained_cell_loses_water(root, co
     summary = pd.read_csv(out / "tables" / "converged_bounds" / "summary.csv")
     lp = summary["compression.Lp_m_per_s_Pa"]
     sph = summary["fluid"] == "sph"
-    drained, closed = summary[sph & (lp == 1e-6)].iloc[0], summary[sph & (lp == 1e-12) & (summary["dryness"] == 1.0)]
+    drained, sealed = summary[sph & (lp == 1e-6)].iloc[0], summary[sph & (lp == 1e-12) & (summary["dryness"] == 1.0)]
     assert drained["mass_lost_at_0.05"] > 1e-3                     # water left while the plates pressed
-    assert (closed["mass_lost_at_0.05"].abs() < 1e-4).all()         # the closed cell keeps it
-    assert drained["smoothed_stress_kPa_at_0.05"] < closed["smoothed_stress_kPa_at_0.05"].min()
+    assert (sealed["mass_lost_at_0.05"].abs() < 1e-4).all()         # the sealed cell keeps it
+    assert drained["smoothed_stress_kPa_at_0.05"] < sealed["smoothed_stress_kPa_at_0.05"].min()
     assert (out / "figures" / "rate01.png").exists() and (out / "figures" / "drain01.png").exists()
     slow = summary[summary["compression.plate_speed_m_s"] == 0.5]
     assert (slow["strain_reached"] > 0.095).all()  # the 0.5 m/s plate gets its travel (records every 200 steps)

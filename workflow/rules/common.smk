@@ -36,6 +36,10 @@ def run_resources(kind, case, what, default):
     return job_resources("tissue" if cells > 1 else kind, what, default)
 
 
+def case_file(case):
+    return f"{OUT}/cases/{case}.json"
+
+
 def run_file(case):
     return f"{OUT}/runs/{case}.h5"
 

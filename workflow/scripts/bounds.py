@@ -1,10 +1,10 @@
 """Snakemake script: the page of the rate and drainage bounds (target converged_bounds)."""
 import pandas as pd
 
-import _path  # noqa: F401
-from analysis import bounds, matrix
+import _path  # the analysis package importable; the rule's files by name
+from analysis import bounds
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config = sm.config
-figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config, "converged_bounds")}
+figures = _path.by_name(sm.input.figures)  # the rule's, in its order
 bounds.write_page(sm.output.html, config, pd.read_csv(sm.input.summary), figures)

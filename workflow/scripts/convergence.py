@@ -1,8 +1,8 @@
 """Snakemake script: the convergence table (CSV) and page (HTML)."""
 import pandas as pd
 
-import _path  # noqa: F401
-from analysis import convergence, matrix
+import _path  # the analysis package importable; the rule's files by name
+from analysis import convergence
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config = sm.config
@@ -10,6 +10,6 @@ summary = pd.read_csv(sm.input.summary)
 anchors = pd.read_csv(sm.input.anchors)
 table = convergence.tables(config, summary)
 table.to_csv(sm.output.table, index=False)
-figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config, "convergence")}
+figures = _path.by_name(sm.input.figures)  # the rule's, in its order
 convergence.write_page(sm.output.html, config, table, figures, convergence.comparisons(config, summary),
                        summary=summary, anchors=anchors)

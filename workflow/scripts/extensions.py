@@ -3,8 +3,8 @@ import pathlib
 
 import pandas as pd
 
-import _path  # noqa: F401
-from analysis import extensions, matrix
+import _path  # the analysis package importable; the rule's files by name
+from analysis import extensions
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
 config = sm.config
@@ -14,5 +14,5 @@ folder = pathlib.Path(sm.output.tables)
 folder.mkdir(parents=True, exist_ok=True)
 for name, frame in frames.items():
     frame.to_csv(folder / f"{name}.csv", index=False)
-figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config, "extensions")}
+figures = _path.by_name(sm.input.figures)  # the rule's, in its order
 extensions.write_page(sm.output.html, config, frames, figures, summary)

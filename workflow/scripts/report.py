@@ -1,7 +1,7 @@
 """Snakemake script: the claims table and the HTML report."""
 import pandas as pd
 
-import _path  # noqa: F401
+import _path  # the analysis package importable; the rule's files by name
 from analysis import claims, columns, matrix, provenance, report
 
 sm = snakemake  # noqa: F821 (provided by Snakemake)
@@ -16,6 +16,6 @@ pd.DataFrame(rows).to_csv(sm.output.claims, index=False)
 column_rows = columns.evaluate(config, summary, series, base)  # {} without claim_columns
 columns.long_table(column_rows).to_csv(sm.output.columns, index=False)
 provenance.write(sm.output.provenance)
-figures = {f: f"{config['output_dir']}/figures/{f}.png" for f in matrix.target_figures(config)}
+figures = _path.by_name(sm.input.figures)  # the rule's, in its order
 report.write(sm.output.html, config, cases, summary, rows, figures, _path.ROOT, cell_pages=sm.input.cells,
              column_rows=column_rows)
