@@ -1,4 +1,4 @@
-"""Makes the repository's `analysis` package importable from Snakemake scripts."""
+"""For the Snakemake scripts: the repository's `analysis` package importable, and a rule's files by name."""
 import pathlib
 import sys
 
