@@ -286,22 +286,6 @@ void apply_override(json& doc, const std::string& assignment) {
 
 namespace {
 
-// The keys only one fluid model reads (fluid.model): SPH's particles, smoothing, viscosity, coupling,
-// closures and CFL-bound settle (engine/sph_fluid.hpp); a closed cell's relaxations' (quasi_static.hpp,
-// read in the settle, the quasi-static steps and the volumetric modulus, whichever the time scheme).
-const std::vector<std::string> kSphOnlyKeys = {
-    "cell.n_fluid", "cell.fill_gap_um", "fluid.viscosity_Pa_s", "fluid.density_diffusion", "fluid.h0_um",
-    "fluid.h_over_dx", "heterogeneity.fluid_viscosity_cv", "coupling.model", "coupling.r0_um",
-    "coupling.repulsion_f0_N_m", "coupling.attraction_f0_N_m", "coupling.attraction_cutoff_over_h",
-    "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
-    "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"};
-const std::vector<std::string> kCavityOnlyKeys = {"time.equilibrium_tolerance", "time.relaxation_max_iterations"};
-// The keys only the quasi-static scheme reads (quasi_static.hpp): a dynamic cell's inertia holds its rotation.
-const std::vector<std::string> kQuasiStaticOnlyKeys = {"compression.cell_rotation"};
-// The keys only the dynamic scheme reads: quasi-static, a periodic slab's period is part of each
-// equilibrium (quasi_static.hpp), not a viscous follower.
-const std::vector<std::string> kDynamicOnlyKeys = {"tissue.period_viscosity_Pa_s"};
-
 // Whether the case file gives `key` a value other than its default (a derived key: any value).
 bool given_away_from_default(const json& doc, const std::string& key) {
   const std::size_t dot = key.find('.');
@@ -336,10 +320,10 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
     for (const auto& key : keys)
       if (given_away_from_default(doc, key) && !as_without(key)) ignored.push_back(key);
   };
-  if (p.fluid_model == kCavityFluid) add(kSphOnlyKeys);
-  if (p.fluid_model != kCavityFluid) add(kCavityOnlyKeys);
-  if (p.time_scheme != kQuasiStatic) add(kQuasiStaticOnlyKeys);
-  if (p.time_scheme == kQuasiStatic) add(kDynamicOnlyKeys);
+  const std::string fluid = "fluid.model = " + std::string(p.fluid_model == kCavityFluid ? "cavity" : "sph");
+  const std::string scheme = "time.scheme = " + std::string(p.time_scheme == kQuasiStatic ? "quasi_static" : "dynamic");
+  for (const KeysReadOnlyBy& own : keys_read_only_by())
+    if (own.reader != fluid && own.reader != scheme) add(own.keys);
   return ignored;
 }
 

@@ -1,5 +1,6 @@
 #include "io/case_schema.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -334,16 +335,43 @@ std::string describe_range(const ParamSpec& spec) {
   return r;
 }
 
+// The keys only one fluid model reads: SPH's particles, smoothing, viscosity, coupling, closures and CFL-bound
+// settle (engine/sph_fluid.hpp); a closed cell's relaxations' (quasi_static.hpp, read in the settle, the
+// quasi-static steps and the volumetric modulus, whichever the time scheme). The keys only one scheme reads:
+// the quasi-static one's rotation hold (a dynamic cell's inertia holds its rotation); the dynamic one's
+// period follower (quasi-static, a periodic slab's period is part of each equilibrium).
+const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
+  static const std::vector<KeysReadOnlyBy> keys = {
+      {"fluid.model = sph",
+       {"cell.n_fluid", "cell.fill_gap_um", "fluid.viscosity_Pa_s", "fluid.density_diffusion", "fluid.h0_um",
+        "fluid.h_over_dx", "heterogeneity.fluid_viscosity_cv", "coupling.model", "coupling.r0_um",
+        "coupling.repulsion_f0_N_m", "coupling.attraction_f0_N_m", "coupling.attraction_cutoff_over_h",
+        "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
+        "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"}},
+      {"fluid.model = cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
+      {"time.scheme = quasi_static", {"compression.cell_rotation"}},
+      {"time.scheme = dynamic", {"tissue.period_viscosity_Pa_s"}},
+  };
+  return keys;
+}
+
+std::string read_only_by(const std::string& key) {
+  for (const KeysReadOnlyBy& own : keys_read_only_by())
+    if (std::find(own.keys.begin(), own.keys.end(), key) != own.keys.end()) return own.reader;
+  return "";
+}
+
 std::string reference_markdown() {
   std::ostringstream s;
-  s << "| key | unit | default | allowed | meaning | equation |\n"
-       "|---|---|---|---|---|---|\n";
+  s << "| key | unit | default | allowed | meaning | equation | read only by |\n"
+       "|---|---|---|---|---|---|---|\n";
   for (const auto& p : param_specs()) {
     const std::string def = is_choice(p)        ? p.choices.front()
                             : p.default_value ? format_number(*p.default_value)
                                               : "auto: " + p.auto_rule;
+    const std::string reader = read_only_by(p.key);
     s << "| `" << p.key << "` | " << p.unit << " | " << def << " | " << describe_range(p) << " | "
-      << p.meaning << " | " << p.equation << " |\n";
+      << p.meaning << " | " << p.equation << " | " << (reader.empty() ? "" : "`" + reader + "`") << " |\n";
   }
   return s.str();
 }

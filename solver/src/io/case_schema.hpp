@@ -31,6 +31,17 @@ struct ParamSpec {
 const std::vector<ParamSpec>& param_specs();
 const ParamSpec* find_param(const std::string& key);
 
+// The keys that only one fluid model or one time scheme reads, each reader's own: a case of another model
+// or scheme that gives one is warned that it does not read it (case_file.hpp, keys_the_case_ignores), and
+// the reference table says who reads it.
+struct KeysReadOnlyBy {
+  std::string reader;             // "fluid.model = sph", "time.scheme = quasi_static", ...
+  std::vector<std::string> keys;
+};
+const std::vector<KeysReadOnlyBy>& keys_read_only_by();
+// Who alone reads `key` ("" if every model and scheme does).
+std::string read_only_by(const std::string& key);
+
 bool is_integer(const ParamSpec& spec);
 bool is_optional(const ParamSpec& spec);
 bool is_choice(const ParamSpec& spec);
