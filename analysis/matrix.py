@@ -27,6 +27,7 @@ import pathlib
 from dataclasses import dataclass, field
 
 import jsonschema
+import yaml
 
 from analysis.quantities import DRAWABLE, MODULI  # the solver's time series, those derived, the moduli
 
@@ -344,6 +345,21 @@ def build(config, values, schema=None):
         if "key" in axis_spec and hides_base_value(axis_spec):
             values[axis] = get_key(case, axis_spec["key"])
     return case, values
+
+
+def workflow_config(configfiles, root="."):
+    """The config a workflow run on these --configfile files sees: each merged over config/config.yaml as
+    Snakemake merges them (dicts key by key, anything else replaced); relative paths are under root."""
+    def merged(base, update):
+        out = dict(base)
+        for key, value in update.items():
+            out[key] = merged(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
+        return out
+    root = pathlib.Path(root)
+    config = yaml.safe_load((root / "config" / "config.yaml").read_text())
+    for path in configfiles:
+        config = merged(config, yaml.safe_load((root / path).read_text()))
+    return config
 
 
 def expand(config):

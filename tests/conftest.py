@@ -8,10 +8,11 @@ import subprocess
 import sys
 
 import pytest
-import yaml
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the analysis package
+
+from analysis import matrix  # noqa: E402
 
 
 def between_markers(text, marker):
@@ -60,19 +61,9 @@ CI = ["config/ci.yaml"]                                 # the paper's 48 cases o
 TINY = ["config/ci.yaml", "tests/tiny_matrix.yaml"]    # a case or two of each study: every rule, 5 cases
 
 
-def merged(base, update):
-    """update merged into base as Snakemake merges --configfile files: dicts key by key, anything else replaced."""
-    out = dict(base)
-    for key, value in update.items():
-        out[key] = merged(out[key], value) if isinstance(value, dict) and isinstance(out.get(key), dict) else value
-    return out
-
-
 def workflow_config(root, configs, out=None):
     """The config a workflow run on `configs` (merged over config/config.yaml) sees, writing to `out`."""
-    config = yaml.safe_load((root / "config" / "config.yaml").read_text())
-    for path in configs:
-        config = merged(config, yaml.safe_load((root / path).read_text()))
+    config = matrix.workflow_config(configs, root)
     if out is not None:
         config["output_dir"] = str(out)
     return config
