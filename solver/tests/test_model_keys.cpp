@@ -3,6 +3,7 @@
 // the reference table says who reads it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <string>
 
@@ -15,12 +16,16 @@ using namespace cellsim;
 
 TEST(ModelKeys, EachIsASchemaKeyWithOneReader) {
   std::set<std::string> seen;
-  for (const KeysReadOnlyBy& own : keys_read_only_by())
+  for (const KeysReadOnlyBy& own : keys_read_only_by()) {
     for (const std::string& key : own.keys) {
-      EXPECT_NE(find_param(key), nullptr) << key << " (" << own.reader << ") is not a case key";
+      EXPECT_NE(find_param(key), nullptr) << key << " (" << own.reader() << ") is not a case key";
       EXPECT_TRUE(seen.insert(key).second) << key << " has two readers";
-      EXPECT_EQ(read_only_by(key), own.reader);
+      EXPECT_EQ(read_only_by(key), own.reader());
     }
+    const ParamSpec* reader = find_param(own.choice_key);
+    ASSERT_TRUE(reader && is_choice(*reader)) << own.choice_key;
+    EXPECT_NE(std::find(reader->choices.begin(), reader->choices.end(), own.value), reader->choices.end()) << own.reader();
+  }
   EXPECT_EQ(read_only_by("wall.G_MPa"), "");
 }
 

@@ -320,10 +320,10 @@ std::vector<std::string> keys_the_case_ignores(const json& doc, const Params& p)
     for (const auto& key : keys)
       if (given_away_from_default(doc, key) && !as_without(key)) ignored.push_back(key);
   };
-  const std::string fluid = "fluid.model = " + std::string(p.fluid_model == kCavityFluid ? "cavity" : "sph");
-  const std::string scheme = "time.scheme = " + std::string(p.time_scheme == kQuasiStatic ? "quasi_static" : "dynamic");
-  for (const KeysReadOnlyBy& own : keys_read_only_by())
-    if (own.reader != fluid && own.reader != scheme) add(own.keys);
+  for (const KeysReadOnlyBy& own : keys_read_only_by()) {  // a reader's keys, where the case is another's
+    const std::size_t dot = own.choice_key.find('.');
+    if (resolved[own.choice_key.substr(0, dot)][own.choice_key.substr(dot + 1)] != own.value) add(own.keys);
+  }
   return ignored;
 }
 

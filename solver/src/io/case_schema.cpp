@@ -342,22 +342,22 @@ std::string describe_range(const ParamSpec& spec) {
 // period follower (quasi-static, a periodic slab's period is part of each equilibrium).
 const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
   static const std::vector<KeysReadOnlyBy> keys = {
-      {"fluid.model = sph",
+      {"fluid.model", "sph",
        {"cell.n_fluid", "cell.fill_gap_um", "fluid.viscosity_Pa_s", "fluid.density_diffusion", "fluid.h0_um",
         "fluid.h_over_dx", "heterogeneity.fluid_viscosity_cv", "coupling.model", "coupling.r0_um",
         "coupling.repulsion_f0_N_m", "coupling.attraction_f0_N_m", "coupling.attraction_cutoff_over_h",
         "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
         "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"}},
-      {"fluid.model = cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
-      {"time.scheme = quasi_static", {"compression.cell_rotation"}},
-      {"time.scheme = dynamic", {"tissue.period_viscosity_Pa_s"}},
+      {"fluid.model", "cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
+      {"time.scheme", "quasi_static", {"compression.cell_rotation"}},
+      {"time.scheme", "dynamic", {"tissue.period_viscosity_Pa_s"}},
   };
   return keys;
 }
 
 std::string read_only_by(const std::string& key) {
   for (const KeysReadOnlyBy& own : keys_read_only_by())
-    if (std::find(own.keys.begin(), own.keys.end(), key) != own.keys.end()) return own.reader;
+    if (std::find(own.keys.begin(), own.keys.end(), key) != own.keys.end()) return own.reader();
   return "";
 }
 

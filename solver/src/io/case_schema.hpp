@@ -35,8 +35,9 @@ const ParamSpec* find_param(const std::string& key);
 // or scheme that gives one is warned that it does not read it (case_file.hpp, keys_the_case_ignores), and
 // the reference table says who reads it.
 struct KeysReadOnlyBy {
-  std::string reader;             // "fluid.model = sph", "time.scheme = quasi_static", ...
+  std::string choice_key, value;  // the reader: a choice key and its value ("fluid.model", "sph")
   std::vector<std::string> keys;
+  std::string reader() const { return choice_key + " = " + value; }
 };
 const std::vector<KeysReadOnlyBy>& keys_read_only_by();
 // Who alone reads `key` ("" if every model and scheme does).
