@@ -2,7 +2,7 @@
 beside the tiny run of the paper's configuration: the claims in four columns with their bands and verdicts,
 the overlaid figures with the other run's curves dashed and the closed cell's dotted, the texture analyser's
 study; the rate and drainage bounds as their own target (converged_bounds), with a drained cell that loses
-water while a closed one does not. Slow: a few minutes on 2 cores."""
+water while a sealed one does not. Slow: a few minutes on 2 cores."""
 import shutil
 
 import pandas as pd

@@ -28,7 +28,7 @@ def test_the_slab_of_closed_cells_beside_its_cell_and_the_bounds(tissue_run):
     assert table["energy residual, compression / plate work"].abs().max() < 0.02
     assert (slabs["period loss, drying [nJ]"] > 0).all()
     assert (slabs.set_index("sides").loc["unconfined", "period loss, compression [nJ]"] > 0)
-    # A drained cell lets water out under the plates and is softer than the closed one.
+    # A drained cell lets water out under the plates and is softer than the sealed one.
     cells = table[(table["cells"] == 1) & (table["numerics"] == table["numerics"].iloc[0])]
     assert cells.set_index("compression L_p").loc[1e-6, "modulus, nominal [MPa]"] < \
         cells.set_index("compression L_p").loc[1e-12, "modulus, nominal [MPa]"]
