@@ -83,7 +83,7 @@ def same_case(config, manifest, case):
         axes = [a for a in config["studies"][study].get("vary", {}) if a in manifest]
         rows = manifest[manifest["studies"].fillna("").str.split().apply(lambda names: study in names)]
         for axis in axes:
-            rows = rows[[_same_value(v, case.values[axis]) for v in rows[axis]]]
+            rows = rows.loc[np.array([_same_value(v, case.values[axis]) for v in rows[axis]], dtype=bool)]
         if len(rows):
             return rows.iloc[0]["result"]
     return None
