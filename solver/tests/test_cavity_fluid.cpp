@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "cli_helpers.hpp"
+#include "engine/cavity_fluid.hpp"
 #include "engine/quasi_static.hpp"
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
@@ -306,10 +307,10 @@ TEST(CavityFluid, MeetsTheFluidModelsContracts) {
   const double derivative = b.sim.fluid().stored_energy_per_turgor_m3(b.sim.state(), context.eos);
   ASSERT_NE(derivative, 0.0);
   EXPECT_NEAR((internal_at(P_T + dP) - internal_at(P_T - dP)) / (2 * dP) / derivative, 1.0, 1e-6);
-  EXPECT_EQ(b.sim.fluid().time_step_violation(b.sim.state(), context), "");
+  EXPECT_EQ(dynamic_cast<const CavityFluid&>(b.sim.fluid()).time_step_violation(b.sim.state(), context), "");
 
   Built stiff(cavity_case({{"fluid", {{"bulk_modulus_MPa", 1e5}}}, {"drying", {{"Lp_m_per_s_Pa", 1e-3}}}}));
-  const std::string violation = stiff.sim.fluid().time_step_violation(stiff.sim.state(), stiff.sim.fluid_context());
+  const std::string violation = dynamic_cast<const CavityFluid&>(stiff.sim.fluid()).time_step_violation(stiff.sim.state(), stiff.sim.fluid_context());
   EXPECT_NE(violation.find("time.dt_ns"), std::string::npos) << violation;
   EXPECT_NE(violation.find("closed cell"), std::string::npos) << violation;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/simulation.hpp"
+#include "engine/sph_fluid.hpp"
 #include "geometry/tissue.hpp"
 #include "small_cell.hpp"
 
@@ -74,10 +75,10 @@ TEST(FluidModel, TheWallPairsReachAsFarAsItsCoupling) {
 // the same state's sound speed is raised a hundredfold (K x 10^4), and the message names the limit.
 TEST(FluidModel, SaysWhichOfItsLimitsTheTimeStepExceeds) {
   Built b;
-  EXPECT_EQ(b.sim.fluid().time_step_violation(b.sim.state(), b.context(b.sim.eos())), "");
+  EXPECT_EQ(dynamic_cast<const SphFluid&>(b.sim.fluid()).time_step_violation(b.sim.state(), b.context(b.sim.eos())), "");
   EquationOfState stiff = b.sim.eos();
   stiff.bulk_modulus_Pa *= 1e4;
-  const std::string violation = b.sim.fluid().time_step_violation(b.sim.state(), b.context(stiff));
+  const std::string violation = dynamic_cast<const SphFluid&>(b.sim.fluid()).time_step_violation(b.sim.state(), b.context(stiff));
   EXPECT_NE(violation.find("sound-speed CFL limit"), std::string::npos) << violation;
   EXPECT_NE(violation.find("time.dt_ns"), std::string::npos) << violation;
 }
@@ -107,7 +108,7 @@ TEST(FluidModel, ItsCellPressuresAreEachCellsOwnMean) {
   Built b(nlohmann::json{{"tissue", {{"cells_x", 2}}}});
   ASSERT_EQ(b.sim.cells().count(), 2);
   for (int n = 0; n < 5; ++n) b.sim.step();
-  const Eigen::VectorXd& P = b.sim.sph_fluid().pressure_Pa();
+  const Eigen::VectorXd& P = dynamic_cast<const SphFluid&>(b.sim.fluid()).pressure_Pa();
   const std::vector<double> mean = b.sim.cell_mean_fluid_pressure_Pa();
   ASSERT_EQ(mean.size(), 2u);
   for (int c = 0; c < 2; ++c)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/simulation.hpp"
+#include "engine/sph_fluid.hpp"
 #include "geometry/heterogeneity.hpp"
 #include "geometry/tissue.hpp"
 #include "small_cell.hpp"
@@ -97,7 +98,7 @@ TEST(Heterogeneity, ACellsBondsGetTheirFactorsAndItsFluidItsViscosity) {
   const Moments m = moments(G_t_factor);  // the product of two independent factors: cv^2 = 1.3^2 1.2^2 / 1 - 1
   EXPECT_NEAR(m.mean, 1.0, 0.06);
   EXPECT_NEAR(m.sd, std::sqrt(1.09 * 1.04 - 1.0), 0.06);
-  const Viscosity mu = sim.sph_fluid().viscosity();
+  const Viscosity mu = dynamic_cast<const SphFluid&>(sim.fluid()).viscosity();
   ASSERT_NE(mu.per_particle_Pa_s, nullptr);
   for (Eigen::Index i = 0; i < sim.state().fluid.size(); ++i)
     EXPECT_EQ(mu.per_particle_Pa_s[i], mu.per_particle_Pa_s[0]);  // one cell, one viscosity
@@ -107,7 +108,7 @@ TEST(Heterogeneity, ACellsBondsGetTheirFactorsAndItsFluidItsViscosity) {
   const Tissue t2 = build_tissue(uniform);
   const Simulation plain(uniform, t2);
   for (double G_t : plain.bond_law().G_t_N_m) EXPECT_EQ(G_t, uniform.G_Pa * uniform.thickness_m);
-  EXPECT_EQ(plain.sph_fluid().viscosity().per_particle_Pa_s, nullptr);
+  EXPECT_EQ(dynamic_cast<const SphFluid&>(plain.fluid()).viscosity().per_particle_Pa_s, nullptr);
 }
 
 TEST(Heterogeneity, TheSameSeedGivesTheSameBitsAndTheAccountHolds) {

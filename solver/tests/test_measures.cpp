@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "engine/simulation.hpp"
+#include "physics/lennard_jones.hpp"
 #include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 #include "small_cell.hpp"

@@ -38,7 +38,7 @@ Eigen::Matrix3Xd rough_wall(const Tissue& tissue) {
 }
 
 Eigen::VectorXd pressure_forces(const Eigen::Matrix3Xd& x, const WallMesh& mesh, double P) {
-  return P * CavityFluid::volume_gradients(wall_surface(x, mesh));
+  return P * stacked_volume_gradients(wall_surface(x, mesh).vertex_normal);
 }
 
 // The preconditioner's matrix, dense: the factored sparse part, its shift, and each cell's volume spring
@@ -54,6 +54,11 @@ Eigen::MatrixXd dense_with_volume_springs(const Eigen::SparseMatrix<double>& fac
     dense += k_c[static_cast<std::size_t>(c)] * gc * gc.transpose();
   }
   return dense;
+}
+
+void add_diagonal_shift(double shift_N_m, BlockStiffness& K) {
+  for (Eigen::Index k = 0; k < K.matrix().rows() / 3; ++k)
+    K.add(static_cast<int>(k), static_cast<int>(k), shift_N_m * Eigen::Matrix3d::Identity());
 }
 
 }  // namespace
@@ -102,7 +107,7 @@ TEST(WallSpringStiffness, IsMinusTheDerivativeOfTheSpringsForceWithAPlasticElong
     return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
   };
   BlockStiffness springs(x.cols(), tissue.mesh.bonds);
-  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, plastic, PlateLaw{}, Plates{}, 0.0, springs);
+  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, plastic, springs);
   const Eigen::MatrixXd K = Eigen::MatrixXd(springs.matrix());
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-12 * K.cwiseAbs().maxCoeff());
   const double h = 1e-12;
@@ -116,8 +121,7 @@ TEST(WallSpringStiffness, IsMinusTheDerivativeOfTheSpringsForceWithAPlasticElong
   }
   // Without the sliders the stiffness is another: the test sees the plastic elongation.
   BlockStiffness elastic(x.cols(), tissue.mesh.bonds);
-  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, std::vector<double>(plastic.size(), 0.0), PlateLaw{}, Plates{},
-                            0.0, elastic);
+  add_wall_spring_stiffness(x, tissue.mesh, law, ramp, std::vector<double>(plastic.size(), 0.0), elastic);
   EXPECT_GT((Eigen::MatrixXd(elastic.matrix()) - K).cwiseAbs().maxCoeff(), 1e-3 * K.cwiseAbs().maxCoeff());
 }
 
@@ -149,11 +153,11 @@ TEST(NewtonPreconditioner, SolvesWithTheSparsePartAndEachCellsVolumeSpring) {
   const Eigen::Matrix3Xd& x = sim.state().wall.x;
   const Eigen::Index n = x.size();
   BlockStiffness stiffness(x.cols(), sim.mesh().bonds);
-  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m,
-                            sim.plate_law(), sim.state().plates, 1e-2, stiffness);
+  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m, stiffness);
+  add_diagonal_shift(1e-2, stiffness);
   add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
   const Eigen::SparseMatrix<double>& A = stiffness.matrix();
-  const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
+  const Eigen::VectorXd g = stacked_volume_gradients(sim.surface().vertex_normal);
   const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 0.0};  // the second cell drained
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
 
@@ -183,13 +187,13 @@ TEST(NewtonPreconditioner, SolvesWithEveryCellsVolumeSpringWhereContactsJoinTheC
   const int a = sim.cells().wall[0], b = sim.cells().wall[1] + 7;  // one particle of each cell
   std::vector<std::array<int, 2>> pairs = sim.mesh().bonds;
   pairs.push_back({a, b});
-  const Eigen::VectorXd g = CavityFluid::volume_gradients(sim.surface());
+  const Eigen::VectorXd g = stacked_volume_gradients(sim.surface().vertex_normal);
   const std::vector<double> k_c = {7 * 20e6 / sim.surface().cell_volume_m3[0], 3 * 20e6 / sim.surface().cell_volume_m3[1]};
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
   for (double joining_N_m : {0.0, 1e3}) {
     BlockStiffness stiffness(x.cols(), pairs);
-    add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m,
-                            sim.plate_law(), sim.state().plates, 1e2, stiffness);
+    add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), 1.0, sim.state().bond_plastic_elongation_m, stiffness);
+    add_diagonal_shift(1e2, stiffness);
     add_pressure_follower_stiffness(x, sim.mesh(), {2e5, 3e5}, stiffness);
     const Eigen::Vector3d line = (x.col(b) - x.col(a)).normalized();
     const Eigen::Matrix3d block = joining_N_m * line * line.transpose();

@@ -7,6 +7,7 @@
 
 #include "engine/settle.hpp"
 #include "engine/simulation.hpp"
+#include "engine/sph_fluid.hpp"
 #include "geometry/tissue.hpp"
 #include "io/case_file.hpp"
 
@@ -45,7 +46,7 @@ TEST(Settle, RelaxesTheFreshCellToRestAtItsTurgorWithTheWallCarryingTheFluidPres
   EXPECT_TRUE(s.fluid.v.isZero(0.0));
   EXPECT_TRUE(s.wall.v.isZero(0.0));
   EXPECT_TRUE((s.fluid.rho.array() == p.fluid_density_kg_m3).all());  // every particle at P = P_T0
-  EXPECT_NEAR(sim.sph_fluid().pressure_Pa().mean(), 200e3, 1e-6);
+  EXPECT_NEAR(dynamic_cast<const SphFluid&>(sim.fluid()).pressure_Pa().mean(), 200e3, 1e-6);
   EXPECT_NEAR(s.wall_pressure_Pa / 200e3, 1.0, 0.01);                 // the closure's balance
   EXPECT_DOUBLE_EQ(s.initial_fluid_mass_kg, s.fluid.m.sum());         // M_f0 is the settled mass
   EXPECT_DOUBLE_EQ(s.smoothing_length_m, *p.h0_m);                    // D0 of Eq 6 taken at rest

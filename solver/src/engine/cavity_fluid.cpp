@@ -128,11 +128,8 @@ std::vector<double> CavityFluid::volume_stiffness_Pa_m3(const EquationOfState& e
   return stiffness;
 }
 
-Eigen::VectorXd CavityFluid::volume_gradients(const WallSurface& surface) {
-  Eigen::VectorXd g(surface.vertex_normal.size());
-  for (Eigen::Index k = 0; k < surface.vertex_normal.cols(); ++k)
-    g.segment<3>(3 * k) = volume_gradient(surface.vertex_normal.col(k));
-  return g;
+Eigen::VectorXd CavityFluid::volume_gradients(const WallSurface& surface) const {
+  return stacked_volume_gradients(surface.vertex_normal);
 }
 
 void CavityFluid::kick(State& s, double half_dt, int) {

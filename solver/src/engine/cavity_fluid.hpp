@@ -14,7 +14,7 @@
 
 namespace cellsim {
 
-class CavityFluid final : public FluidModel {
+class CavityFluid final : public FluidModel, public LeapfrogFluid, public IncrementFluid {
  public:
   explicit CavityFluid(const Params& p);
 
@@ -23,38 +23,23 @@ class CavityFluid final : public FluidModel {
   FluidReadings readings(const State& s, const CellRanges& cells, const WallSurface& surface,
                          const EquationOfState& eos) const override;
   double follow_smoothing_length(double) override { return 0; }  // no wall-fluid pairs
-  bool density_in_drift() const override { return false; }
-  void advance_density(State&, const FluidContext&, double, const EnergyValues&) override {}
   void compute_forces(State& s, const FluidContext& c, bool pairs_fresh, EnergyValues& power_W) override;
   void transfer_mass(State& s, const FluidContext& c, EnergyValues& power_W) override;
   void couple_to_wall(State& s, const FluidContext& c, bool weights_fresh, Eigen::Matrix3Xd& on_wall,
                       Eigen::Matrix3Xd& backstop_on_wall, EnergyValues& power_W) override;
   void kick(State& s, double half_dt, int threads) override;
-  double drift(State&, double, int) override { return 0; }
-  void apply_drying_closure(State&, const FluidContext&, const std::vector<double>&) override {}
-  void start_compression(State&, const FluidContext&) override {}
-  void apply_compression_closure(State&, const FluidContext&) override {}
   std::string time_step_violation(const State& s, const FluidContext& c) const override;
   void stored_energy(const State& s, const FluidContext& c, EnergyValues& e) const override;
   double stored_energy_per_turgor_m3(const State& s, const EquationOfState& eos) const override;
   std::vector<double> cell_mean_pressure_Pa(const CellRanges&) const override { return pressure_Pa_; }
-  const Eigen::Matrix3Xd& particle_force() const override { return no_particles_; }
 
-  // Eq 11 over one increment of dt_s (quasi_static.hpp), backward Euler: until end_increment, each cell's
-  // density is the one at which its mass now plus dt dM/dt fills the volume its wall encloses
-  // (physics/cavity_pressure.hpp; the wall's area and L_p as now). dt_s = infinity: drained, P = P_T.
-  void begin_increment(const State& s, const FluidContext& c, double dt_s);
-  // Into the state, the masses the increment ends with; returns the energy Eq 11's water brought over it
-  // (the change of M e(M/V) plus the work of the pressure along the volume's path, which the wall took).
-  double end_increment(State& s, const FluidContext& c);
-  // In an increment: the work the cells' pressures did on their walls since it began, sum of the
-  // integral of P dV from each cell's volume then to its volume now (P a function of V alone there).
-  double increment_work_J(const FluidContext& c) const;
-  // Per cell, -dP/dV at the last force evaluation: the volume spring the Newton steps' preconditioner adds
-  // (newton_preconditioner.hpp); in an increment, Eq 11's backward Euler softens it (drained: 0).
-  std::vector<double> volume_stiffness_Pa_m3(const EquationOfState& eos) const;
-  // dV/dx of each cell's enclosed volume on its wall particles, stacked (x, y, z per particle) [m^2].
-  static Eigen::VectorXd volume_gradients(const WallSurface& surface);
+  // The increments of the quasi-static scheme (fluid_model.hpp's IncrementFluid; physics/cavity_pressure.hpp).
+  void begin_increment(const State& s, const FluidContext& c, double dt_s) override;
+  double end_increment(State& s, const FluidContext& c) override;
+  double increment_work_J(const FluidContext& c) const override;
+  // In an increment, Eq 11's backward Euler softens -dP/dV (drained: 0).
+  std::vector<double> volume_stiffness_Pa_m3(const EquationOfState& eos) const override;
+  Eigen::VectorXd volume_gradients(const WallSurface& surface) const override;
 
  private:
   double density_in_increment(int cell, double volume_m3, const EquationOfState& eos) const;
@@ -68,7 +53,6 @@ class CavityFluid final : public FluidModel {
   // An increment's start (begin_increment): each cell's mass and volume, and dt A L_p (m^3/Pa).
   bool in_increment_ = false;
   std::vector<double> increment_mass_kg_, increment_volume_m3_, increment_a_m3_Pa_;
-  Eigen::Matrix3Xd no_particles_;
 };
 
 }  // namespace cellsim

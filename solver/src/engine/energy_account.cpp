@@ -4,25 +4,6 @@
 
 namespace cellsim {
 
-EnergyValues energy_terms(const State& s, const EnergyModel& model) {
-  EnergyValues e = s.energy.integral;  // the integrated terms (zero in the others' slots); the others set below
-  model.fluid.stored_energy(s, model.fluid_context, e);
-  e[kKinetic] += 0.5 * s.wall.mass_kg * s.wall.v.colwise().squaredNorm().sum();
-  const BondEnergy bonds = bond_energy(s.wall, model.mesh, model.bonds, model.ramp, s.bond_plastic_elongation_m);
-  e[kWallStiff] = bonds.stiff_J;
-  e[kWallContraction] = bonds.contraction_J;
-  e[kWallBending] = model.bending.energy(s.wall.x);
-  e[kPlateSprings] = plate_energy_J(s.wall.x, model.plates, s.plates);
-  if (model.contact) {
-    const CellContactEnergy between = cell_contact_energy(s.wall.x, *model.wall_wall, *model.lamella, *model.contact,
-                                                          s.box, s.lamella_intact, s.lamella_peak_opening_m);
-    e[kContact] = between.contact_J;
-    e[kLamella] = between.lamella_J;
-    e[kLamellaLoss] = between.lamella_dissipated_J;
-  }
-  return e;
-}
-
 double stored_energy_J(const EnergyValues& terms) {
   double total = 0;
   for (const EnergyTerm& term : kEnergyTerms)

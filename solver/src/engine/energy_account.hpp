@@ -1,42 +1,17 @@
 #pragma once
 // The energy account (docs/model.md, "The energy account"), over the table of its terms
-// (core/energy_terms.hpp). At every record: the energy stored in the particles (kinetic; the fluid's
+// (core/energy_terms.hpp); the force field's terms give their stored energies (force_field.hpp). At every
+// record: the energy stored in the particles (kinetic; the fluid's
 // internal energy of Eq 7; the wall's stiff, contraction and bending energies; the LJ coupling's
 // potential; the plates' springs; a tissue's contacts and lamella), and the running integrals of what the
 // non-conservative terms put in or took out (EnergyFlows, state.hpp). What none of them explains is the
 // residual: the error of the discretisation (the time
 // step, the cut-off r_c = 2h that moves with h, a wall particle entering a plate's footprint inside its
 // range) and any term that creates or destroys energy, such as a coupling that is not conservative.
+#include "core/energy_terms.hpp"
 #include "core/state.hpp"
-#include "engine/fluid_model.hpp"
-#include "geometry/neighbours.hpp"
-#include "geometry/wall_mesh.hpp"
-#include "physics/bending.hpp"
-#include "physics/cell_contact.hpp"
-#include "physics/eos.hpp"
-#include "physics/plates.hpp"
-#include "physics/wall_bonds.hpp"
 
 namespace cellsim {
-
-// What the stored energy depends on besides the state: the fluid's terms come from its model
-// (fluid_model.hpp), the wall's and the plates' and a tissue's from their laws here.
-struct EnergyModel {
-  const FluidModel& fluid;
-  const FluidContext& fluid_context;
-  const WallMesh& mesh;
-  const BondLaw& bonds;
-  double ramp;  // of L_ref (drying.hpp)
-  const Bending& bending;
-  const PlateLaw& plates;
-  const CellContactLaw* contact = nullptr;  // a tissue's (null for one cell), with its pairs and bonds:
-  const PairList* wall_wall = nullptr;
-  const std::vector<LamellaBond>* lamella = nullptr;
-};
-
-// Every term of the account now (core/energy_terms.hpp): the stored energies and the losses that are a
-// function of the state (the lamella's damage) from the state; the running integrals from s.energy.
-EnergyValues energy_terms(const State& s, const EnergyModel& model);
 
 // The sum of the stored terms, in the table's order.
 double stored_energy_J(const EnergyValues& terms);

@@ -41,9 +41,9 @@ double pressure_load_N(const Simulation& sim) {
   return load_pressure_Pa(sim) * sim.surface().area_m2 / static_cast<double>(sim.state().wall.size());
 }
 
-// What the wall's laws write as they are evaluated (the plastic sliders, the middle lamella's damage):
-// the relaxation's probes and rejected trials must leave none of it, so it is kept at the last
-// accepted point and put back before every evaluation.
+// What the wall's laws write as they are evaluated (the plastic sliders, the middle lamella's damage): the
+// relaxation's probes and rejected trials must leave none of it, so it is kept at the last accepted point
+// and put back before every evaluation.
 struct WallHistory {
   std::vector<double> plastic_elongation_m, lamella_peak_opening_m;
   std::vector<char> lamella_intact;
@@ -78,9 +78,9 @@ void drop_held_directions(const RotationHold* hold, Eigen::Ref<Eigen::VectorXd> 
 // path in this increment, which is the fluid's potential there (cavity_fluid.hpp; its mass is slaved to V,
 // so M e(M/V) at the step's mass is not); and what the wall's history took (plastic flow, the lamella's
 // damage) up to here.
-void potential_now(Simulation& sim, double& potential_J, double& dissipated_J) {
+void potential_now(Simulation& sim, const IncrementFluid& increments, double& potential_J, double& dissipated_J) {
   const EnergyValues e = sim.energy_terms_now();
-  potential_J = stored_energy_J(e) - e[kInternal] - sim.cavity_fluid().increment_work_J(sim.fluid_context());
+  potential_J = stored_energy_J(e) - e[kInternal] - increments.increment_work_J(sim.fluid_context());
   dissipated_J = e[kPlasticLoss] + e[kLamellaLoss];
 }
 
@@ -111,11 +111,13 @@ struct RelaxationStiffness {
   NewtonPreconditioner preconditioner;
 };
 
-// The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the springs, the bending's
-// Gauss-Newton part on the bonds, the cells' pressures' follower stiffness and their volume springs, and
-// a tissue's contacts and lamella. Where the neighbour list was rebuilt since the pattern was laid out, a
+// The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the force field's terms'
+// (force_field.hpp: the springs, the bending's Gauss-Newton part on the bonds, a tissue's contacts and
+// lamella, the cells' pressures' follower stiffness, the plates), kStiffnessShift_N_m on the diagonal, and
+// the cells' volume springs. Where the neighbour list was rebuilt since the pattern was laid out, a
 // tissue's pattern is laid out again from it (the contacts it may make moved on), its ordering found anew.
-void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& history, RelaxationStiffness& at) {
+void factor_at(Simulation& sim, const IncrementFluid& increments, const Eigen::Matrix3Xd& x, const WallHistory& history,
+               RelaxationStiffness& at) {
   forces_at(sim, x, history);  // the cells' pressures and the surface at x (the last evaluation may be a probe's)
   if (cells_joined(sim) && sim.neighbours().builds() != at.list_build) {
     at.stiffness = stiffness_pattern(sim);
@@ -123,19 +125,11 @@ void factor_at(Simulation& sim, const Eigen::Matrix3Xd& x, const WallHistory& hi
     at.preconditioner.forget_ordering();
   }
   BlockStiffness& stiffness = at.stiffness;
-  NewtonPreconditioner& preconditioner = at.preconditioner;
-  const State& s = sim.state();
-  stiffness.set_zero();
-  add_wall_spring_stiffness(x, sim.mesh(), sim.bond_law(), sim.contraction_ramp(), s.bond_plastic_elongation_m,
-                            sim.plate_law(), s.plates, kStiffnessShift_N_m, stiffness);
-  add_pressure_follower_stiffness(x, sim.mesh(), sim.cell_mean_fluid_pressure_Pa(), stiffness);
-  sim.bending().add_gauss_newton_stiffness(x, Bending::FarCorners::OnBonds, stiffness);
-  if (cells_joined(sim))
-    add_cell_contact_stiffness(x, sim.neighbours().wall_wall(), sim.lamella(), sim.contact_law(), s.box,
-                               s.lamella_intact, s.lamella_peak_opening_m, stiffness);
-  const CavityFluid& cavity = sim.cavity_fluid();
-  preconditioner.factor(stiffness.matrix(), CavityFluid::volume_gradients(sim.surface()), sim.cells(),
-                        cavity.volume_stiffness_Pa_m3(sim.eos()), cells_joined(sim));
+  sim.force_field().stiffness(sim.state(), sim.force_context(), stiffness);
+  const Eigen::Matrix3d shift = kStiffnessShift_N_m * Eigen::Matrix3d::Identity();
+  for (int k = 0; k < static_cast<int>(x.cols()); ++k) stiffness.add(k, k, shift);
+  at.preconditioner.factor(stiffness.matrix(), increments.volume_gradients(sim.surface()), sim.cells(),
+                           increments.volume_stiffness_Pa_m3(sim.eos()), cells_joined(sim));
 }
 
 // The plates' predictor: a plate that moves at fixed particles would thrust the particles it touches k_pw
@@ -160,13 +154,13 @@ void move_touching_particles_with_plates(Simulation& sim, const Plates& before) 
 // starts from the history of the last accepted point.
 class WallRelaxation final : public NewtonProblem {
  public:
-  WallRelaxation(Simulation& sim, const RotationHold* hold)
-      : sim_(sim), hold_(hold), history_(WallHistory::of(sim.state())) {}
+  WallRelaxation(Simulation& sim, const IncrementFluid& increments, const RotationHold* hold)
+      : sim_(sim), increments_(increments), hold_(hold), history_(WallHistory::of(sim.state())) {}
 
   Point evaluate(const Eigen::Matrix3Xd& x) override {
     Point point{x, forces_at(sim_, x, history_)};
     if (hold_) hold_->project(point.force);
-    potential_now(sim_, point.potential_J, point.dissipated_J);
+    potential_now(sim_, increments_, point.potential_J, point.dissipated_J);
     point.load_N = pressure_load_N(sim_);
     return point;
   }
@@ -175,7 +169,7 @@ class WallRelaxation final : public NewtonProblem {
   // The pattern is laid out at the first factoring, from the lists the first evaluation left.
   void factor_at(const Point& point) override {
     if (!stiffness_) stiffness_.emplace(sim_);
-    cellsim::factor_at(sim_, point.x, history_, *stiffness_);
+    cellsim::factor_at(sim_, increments_, point.x, history_, *stiffness_);
   }
   Eigen::VectorXd precondition(const Eigen::VectorXd& r) const override { return stiffness_->preconditioner.solve(r); }
   void project(Eigen::Ref<Eigen::VectorXd> v) const override { drop_held_directions(hold_, v); }
@@ -184,6 +178,7 @@ class WallRelaxation final : public NewtonProblem {
 
  private:
   Simulation& sim_;
+  const IncrementFluid& increments_;
   const RotationHold* hold_;
   WallHistory history_;
   std::optional<RelaxationStiffness> stiffness_;
@@ -194,14 +189,15 @@ class WallRelaxation final : public NewtonProblem {
 // Newton's method (newton_solver.hpp) on the relaxation above, no particle moving more than a quarter of a
 // bond's mean rest length in one step. The loss is the fall of the potential from start to end, less what
 // the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J count that).
-Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations, const RotationHold* hold) {
+Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance, std::int64_t max_iterations,
+                       const RotationHold* hold) {
   State& s = sim.mutable_state();
   s.wall.v.setZero();
   double mean_rest_length_m = 0;
   for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
   const double max_move_m =
       kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
-  WallRelaxation relaxation(sim, hold);
+  WallRelaxation relaxation(sim, increments, hold);
   const NewtonResult result = minimise(relaxation, s.wall.x, {tolerance, max_iterations, max_move_m});
   relaxation.leave_at(result.end.x);
   Equilibrium eq;
@@ -215,8 +211,8 @@ Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_itera
 namespace {
 
 // A periodic slab's period in the quasi-static steps: its first strain is the lateral stress over
-// kFirstLateralModulus x the load scale, later ones a secant per axis; no more than kLargestPeriodMove a
-// move, kMaxPeriodMoves moves a step.
+// kFirstLateralModulus x the load scale, later ones a secant per axis, carried from step to step; no more
+// than kLargestPeriodMove a move, kMaxPeriodMoves moves a step.
 constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
 constexpr int kMaxPeriodMoves = 40;
 
@@ -226,14 +222,18 @@ constexpr int kMaxPeriodMoves = 40;
 // scale at an equilibrium of the wall. The lateral stress of the pairs across the period is exact there
 // (periodic_slab.hpp). The period does no work on anything outside: what its moves change of the potential
 // is the relaxation's (its loss counts the fall over every relaxation and move).
-Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_t max_iterations,
-                                  const RotationHold* hold) {
-  Equilibrium eq = relax_wall(sim, tolerance, max_iterations, hold);
+}  // namespace
+
+Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int64_t max_iterations) {
+  Simulation& sim = sim_;
+  const RotationHold* hold = rotation_hold();
+  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold);
   if (!eq.converged || !sim.period_follows()) return eq;
   const State& s = sim.state();
   const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
   Eigen::Vector2d stress = lateral_stress();
-  Eigen::Vector2d modulus = Eigen::Vector2d::Constant(kFirstLateralModulus * load_pressure_Pa(sim));
+  if (!period_modulus_) period_modulus_ = Eigen::Vector2d::Constant(kFirstLateralModulus * load_pressure_Pa(sim));
+  Eigen::Vector2d& modulus = *period_modulus_;
   for (int move = 0;; ++move) {
     if (stress.cwiseAbs().maxCoeff() <= tolerance * load_pressure_Pa(sim)) return eq;
     if (move == kMaxPeriodMoves) {
@@ -245,11 +245,11 @@ Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_
     // -stress / modulus, the modulus d(stress)/d(strain) > 0.
     const Eigen::Vector2d by = (-stress.array() / modulus.array()).cwiseMax(-kLargestPeriodMove).cwiseMin(kLargestPeriodMove);
     double before_J = 0, dissipated_before_J = 0, after_J = 0, dissipated_after_J = 0;
-    potential_now(sim, before_J, dissipated_before_J);
+    potential_now(sim, increments_, before_J, dissipated_before_J);
     sim.strain_period(by);
     sim.refresh_rates();
-    potential_now(sim, after_J, dissipated_after_J);
-    const Equilibrium next = relax_wall(sim, tolerance, max_iterations - eq.iterations, hold);
+    potential_now(sim, increments_, after_J, dissipated_after_J);
+    const Equilibrium next = relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold);
     eq.iterations += next.iterations;
     eq.residual = next.residual;
     eq.converged = next.converged;
@@ -264,7 +264,14 @@ Equilibrium relax_wall_and_period(Simulation& sim, double tolerance, std::int64_
   }
 }
 
-}  // namespace
+// The scheme's fluid must have increments: the case's reader refuses time.scheme = quasi_static for SPH.
+IncrementFluid& increments_of(Simulation& sim) {
+  IncrementFluid* increments = sim.fluid_increments();
+  if (!increments) throw std::logic_error("the quasi-static scheme needs a fluid with increments (fluid_model.hpp)");
+  return *increments;
+}
+
+QuasiStaticScheme::QuasiStaticScheme(Simulation& sim) : sim_(sim), increments_(increments_of(sim)) {}
 
 void QuasiStaticScheme::start_compression() {
   sim_.start_compression();
@@ -294,9 +301,8 @@ void QuasiStaticScheme::step() {
   const double dissipated_in_move_J = stored_at_start[kPlasticLoss] + stored_at_start[kLamellaLoss] -
                                       stored_before[kPlasticLoss] - stored_before[kLamellaLoss];
 
-  CavityFluid& cavity = sim.cavity_fluid();
-  cavity.begin_increment(s, sim.fluid_context(), p.dt_s);
-  const Equilibrium eq = relax_wall_and_period(sim, p.equilibrium_tolerance, p.relaxation_max_iterations, hold);
+  increments_.begin_increment(s, sim.fluid_context(), p.dt_s);
+  const Equilibrium eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations);
   const EnergyValues& power_at_end_W = sim.power_W();
   double loads_J = 0;
   for (EnergyTermId load : {kPlateWork, kDrive}) {
@@ -307,7 +313,7 @@ void QuasiStaticScheme::step() {
   // The relaxation took the potential down from the start's jump; what the loads did not put in of that
   // jump it dissipated too (the account: stored energy now - before = loads' work - losses).
   s.energy.integral[kRelaxationLoss] += eq.loss_J + loads_J - jump_J - dissipated_in_move_J;
-  s.energy.integral[kMassTransfer] += cavity.end_increment(s, sim.fluid_context());
+  s.energy.integral[kMassTransfer] += increments_.end_increment(s, sim.fluid_context());
   s.relaxation_residual = eq.residual;
   s.relaxation_evaluations = static_cast<double>(eq.iterations);
   if (eq.period_unbalanced) {

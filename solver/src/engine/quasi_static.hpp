@@ -24,6 +24,9 @@
 #include <cstdint>
 #include <optional>
 
+#include <Eigen/Core>
+
+#include "engine/fluid_model.hpp"
 #include "engine/rotation_hold.hpp"
 #include "engine/scheme.hpp"
 
@@ -39,16 +42,18 @@ struct Equilibrium {
   bool period_unbalanced = false;  // a periodic slab's period did not reach zero lateral stress
 };
 
-// Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations; a held
-// cell's on its hold (null: none).
-Equilibrium relax_wall(Simulation& sim, double tolerance, std::int64_t max_iterations,
-                       const RotationHold* hold = nullptr);
+// Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations, in the
+// increment its fluid's quasi-static face has begun; a held cell's on its hold (null: none).
+Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance,
+                       std::int64_t max_iterations, const RotationHold* hold = nullptr);
 
-// The scheme: its steps, and from the compression's start its hold on a lone cell's rotation
-// (compression.cell_rotation = held).
+// The scheme: its steps; from the compression's start its hold on a lone cell's rotation
+// (compression.cell_rotation = held); a periodic slab's lateral modulus, the secant of its period's last
+// moves, from step to step.
 class QuasiStaticScheme final : public Scheme {
  public:
-  explicit QuasiStaticScheme(Simulation& sim) : sim_(sim) {}
+  // Throws std::logic_error if sim's fluid has no quasi-static face (fluid_model.hpp).
+  explicit QuasiStaticScheme(Simulation& sim);
   // One step. Throws NumericalFailure (naming the step) if the wall does not reach equilibrium within
   // time.relaxation_max_iterations, or a periodic slab's following period zero lateral stress within its moves.
   void step() override;
@@ -56,8 +61,13 @@ class QuasiStaticScheme final : public Scheme {
   const RotationHold* rotation_hold() const { return rotation_hold_ ? &*rotation_hold_ : nullptr; }
 
  private:
+  // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period too.
+  Equilibrium relax_wall_and_period(double tolerance, std::int64_t max_iterations);
+
   Simulation& sim_;
+  IncrementFluid& increments_;
   std::optional<RotationHold> rotation_hold_;
+  std::optional<Eigen::Vector2d> period_modulus_;  // Pa per unit strain, per axis
 };
 
 }  // namespace cellsim

@@ -25,15 +25,14 @@ constexpr int kMassUpdateEvery = 50;          // pseudo-steps between mass resca
 
 // A closed cell (cavity_fluid.hpp) at rest: its wall relaxed under the fresh turgor held (drained, P = P_T0),
 // then each cell's mass rho0 times the volume it encloses (quasi_static.hpp's relaxation).
-SettleReport settle_closed_cells(Simulation& sim, std::int64_t max_iterations) {
+SettleReport settle_closed_cells(Simulation& sim, IncrementFluid& increments, std::int64_t max_iterations) {
   SettleReport report;
   const double mass_before = sim.fluid().mass_kg(sim.state());
   const double volume_before = sim.surface().volume_m3;
   if (max_iterations > 0) {
-    CavityFluid& cavity = sim.cavity_fluid();
-    cavity.begin_increment(sim.state(), sim.fluid_context(), INFINITY);
-    const Equilibrium eq = relax_wall(sim, sim.params().equilibrium_tolerance, max_iterations);
-    cavity.end_increment(sim.mutable_state(), sim.fluid_context());
+    increments.begin_increment(sim.state(), sim.fluid_context(), INFINITY);
+    const Equilibrium eq = relax_wall(sim, increments, sim.params().equilibrium_tolerance, max_iterations);
+    increments.end_increment(sim.mutable_state(), sim.fluid_context());
     report.iterations = eq.iterations;
     report.residual = eq.residual;
     report.converged = eq.converged;
@@ -47,7 +46,8 @@ SettleReport settle_closed_cells(Simulation& sim, std::int64_t max_iterations) {
 }  // namespace
 
 SettleReport settle(Simulation& sim, std::int64_t max_iterations, double tolerance) {
-  if (sim.params().fluid_model == kCavityFluid) return settle_closed_cells(sim, max_iterations);
+  // A fluid with increments (a closed cell) settles by the quasi-static relaxation; one of particles by FIRE.
+  if (IncrementFluid* increments = sim.fluid_increments()) return settle_closed_cells(sim, *increments, max_iterations);
   SettleReport report;
   State& s = sim.mutable_state();
   auto& f = s.fluid;

@@ -8,8 +8,10 @@
 
 #include "core/errors.hpp"
 #include "geometry/containment.hpp"
+#include "engine/cavity_fluid.hpp"
 #include "engine/leapfrog.hpp"
 #include "engine/periodic_slab.hpp"
+#include "engine/sph_fluid.hpp"
 #include "engine/step_checks.hpp"
 #include "engine/strain_gauge.hpp"
 #include "geometry/hull.hpp"
@@ -24,28 +26,17 @@ namespace {
 // Neighbour-list skin as a fraction of h0: lists are rebuilt about every skin / (2 |v|max) of time.
 constexpr double kSkinOverH0 = 0.15;
 
-// The case's fluid model (fluid_model.hpp, fluid.model): SPH, with either coupling (coupling.model), or the
-// closed cell of one pressure.
-std::unique_ptr<FluidModel> fluid_model(const Params& p, const CellRanges& cells, const PropertyFactors& factors) {
-  if (p.fluid_model == kCavityFluid) return std::make_unique<CavityFluid>(p);
-  return std::make_unique<SphFluid>(p, cells, factors);
+// The case's fluid model (fluid.model) with its faces (fluid_model.hpp): SPH, with either coupling
+// (coupling.model), or the closed cell of one pressure.
+Fluid make_fluid(const Params& p, const CellRanges& cells, const PropertyFactors& factors) {
+  if (p.fluid_model == kCavityFluid) return Fluid::of(std::make_unique<CavityFluid>(p));
+  return Fluid::of(std::make_unique<SphFluid>(p, cells, factors));
 }
 
 // The seeded factors of the heterogeneous properties (heterogeneity.hpp), from the tissue as built.
 PropertyFactors property_factors(const Params& p, const Tissue& tissue) {
   const HeterogeneityLaw law{p.heterogeneity_seed, p.G_cv, p.thickness_cv, p.viscosity_cv, p.correlation_length_m};
   return draw_property_factors(law, tissue.wall_x, tissue.mesh, tissue.cells.cell_of_wall(), tissue.cells.count());
-}
-
-// Adds the coupling's forces on wall particles [begin, end) to their forces, and returns the sum of
-// their push along their unit normals (packed norms and divisions), for the wall pressure.
-double add_coupling(const Eigen::Matrix3Xd& on_wall, const Eigen::Matrix3Xd& vertex_normal, Eigen::Index begin,
-                    Eigen::Index end, Eigen::Matrix3Xd& wall_force) {
-  const Eigen::Index count = end - begin;
-  wall_force.middleCols(begin, count) += on_wall.middleCols(begin, count);
-  return (on_wall.middleCols(begin, count).cwiseProduct(vertex_normal.middleCols(begin, count)).colwise().sum().array() /
-          vertex_normal.middleCols(begin, count).colwise().norm().array())
-      .sum();
 }
 
 }  // namespace
@@ -61,13 +52,14 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
                    make_lamella_law(p, tissue.wall_particle_area_m2)},
       bending_(mesh_, p.bending_stiffness_J),
       neighbours_(kSkinOverH0 * *p.h0_m),
-      fluid_(fluid_model(p, tissue.cells, factors)),
+      fluid_(make_fluid(p, tissue.cells, factors)),
       plate_law_(cellsim::plate_law(p)),
       plate_motion_(plate_motion(p)),
       bond_law_(make_bond_law(p, factors)),
       Lp_m_per_s_Pa_(p.drying_Lp_m_per_s_Pa) {
+  lay_out_force_field();
   const WallSurface built = wall_surface(tissue.wall_x, mesh_);
-  fluid_->fill(s_, tissue, built);
+  fluid_.model->fill(s_, tissue, built);
   s_.wall.x = tissue.wall_x;
   s_.wall.v = Eigen::Matrix3Xd::Zero(3, tissue.wall_x.cols());
   s_.wall.mass_kg = tissue.wall_mass_kg;
@@ -78,7 +70,7 @@ Simulation::Simulation(const Params& p, const Tissue& tissue, const PropertyFact
   if (cells_.count() > 1)
     neighbours_.set_cells(cells_.cell_of_fluid(), cells_.cell_of_wall(), contact_law_.gap_m);
   s_.smoothing_length_m = *p.h0_m;
-  s_.initial_fluid_mass_kg = fluid_->mass_kg(s_);
+  s_.initial_fluid_mass_kg = fluid_.model->mass_kg(s_);
   s_.plates.first_contact_top_z_m = std::nan("");
   const double wall_limit_s =
       wall_spring_dt_limit_s(mesh_, bond_law_, lamella_, p_, tissue.wall_mass_kg, tissue.wall_x.cols());
@@ -102,27 +94,33 @@ void Simulation::start_energy_account() {
   s_.energy.initial_J = energy_residual_J(energy_terms_now(), 0.0);
 }
 
-EnergyValues Simulation::energy_terms_now() const {
-  const bool tissue = cells_.count() > 1;
-  const FluidContext fluid_now = fluid_context();
-  return energy_terms(s_, {*fluid_, fluid_now, mesh_, bond_law_, contraction_ramp(), bending_, plate_law_,
-                           tissue ? &contact_law_ : nullptr, &neighbours_.wall_wall(), &lamella_});
+// The terms in the order their forces are summed: the wall's own, the contacts between cells (a tissue's),
+// the fluid's push, the plates.
+void Simulation::lay_out_force_field() {
+  field_.add(std::make_unique<WallSpringsTerm>(mesh_, bond_law_, *fluid_.model, p_.turgor_Pa, p_.dryness,
+                                               p_.contraction_ratio));
+  field_.add(std::make_unique<BendingTerm>(bending_));
+  if (cells_.count() > 1) field_.add(std::make_unique<CellContactTerm>(lamella_, contact_law_));
+  auto push = std::make_unique<FluidPushTerm>(*fluid_.model, fluid_.increments, mesh_);
+  push_ = push.get();
+  field_.add(std::move(push));
+  field_.add(std::make_unique<PlatesTerm>(plate_law_, plate_motion_));
+}
+
+EnergyValues Simulation::energy_terms_now() const { return field_.energy(s_, force_context()); }
+
+ForceContext Simulation::force_context() const {
+  const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
+  return {fluid_context(), contraction_ramp(), ramp_rate, false};
+}
+
+const Eigen::Matrix3Xd& Simulation::fluid_force() const {
+  static const Eigen::Matrix3Xd none(3, 0);
+  return fluid_.particles ? fluid_.particles->particle_force() : none;
 }
 
 FluidContext Simulation::fluid_context() const {
   return {surface_, neighbours_, cells_, eos(), Lp_m_per_s_Pa_, threads_};
-}
-
-const SphFluid& Simulation::sph_fluid() const {
-  const auto* sph = dynamic_cast<const SphFluid*>(fluid_.get());
-  if (!sph) throw std::logic_error("this case's fluid is not SPH (fluid_model.hpp)");
-  return *sph;
-}
-
-CavityFluid& Simulation::cavity_fluid() {
-  auto* cavity = dynamic_cast<CavityFluid*>(fluid_.get());
-  if (!cavity) throw std::logic_error("this case's fluid is not a closed cell (fluid_model.hpp)");
-  return *cavity;
 }
 
 double Simulation::contraction_ramp() const {
@@ -150,10 +148,12 @@ void Simulation::step() {
   drift(p_.dt_s);
   follow_lateral_stress(p_.dt_s);
   timer_.lap(Phase::Integration);
-  compute_rates(fluid_->density_in_drift() ? p_.dt_s : 0.0);
+  ParticleFluid* particles = fluid_.particles;
+  compute_rates(particles && particles->density_in_drift() ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
-  if (s_.stage == Stage::Drying) fluid_->apply_drying_closure(s_, fluid_context(), cell_wall_pressure_Pa_);
-  if (s_.stage == Stage::Compression) fluid_->apply_compression_closure(s_, fluid_context());
+  if (particles && s_.stage == Stage::Drying)
+    particles->apply_drying_closure(s_, fluid_context(), cell_wall_pressure_Pa());
+  if (particles && s_.stage == Stage::Compression) particles->apply_compression_closure(s_, fluid_context());
   finish_step();
 }
 
@@ -183,23 +183,15 @@ void Simulation::compute_rates(double density_step_s) {
   timer_.lap(Phase::Geometry);
   update_neighbours();
   timer_.lap(Phase::Neighbours);
-  const FluidContext fluid_now = fluid_context();  // the positions' surface and lists, the clock's EOS
-  if (density_step_s > 0) fluid_->advance_density(s_, fluid_now, density_step_s, energy_power_W_);
+  ForceContext now = force_context();  // the positions' surface and lists, the clock's EOS and ramp
+  now.pairs_fresh = density_step_s > 0;
+  if (now.pairs_fresh) fluid_.particles->advance_density(s_, now.fluid, density_step_s, energy_power_W_);
   timer_.lap(Phase::DensityDrift);
-  fluid_->compute_forces(s_, fluid_now, density_step_s > 0, energy_power_W_);
+  fluid_.model->compute_forces(s_, now.fluid, now.pairs_fresh, energy_power_W_);
   timer_.lap(Phase::FluidPairs);
-  fluid_->transfer_mass(s_, fluid_now, energy_power_W_);
+  fluid_.model->transfer_mass(s_, now.fluid, energy_power_W_);
   timer_.lap(Phase::MassTransfer);
-  wall_force_.resize(3, s_.wall.size());
-  for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
-    wall_force_.middleCols(begin, end - begin).setZero();
-  });
-  wall_terms();
-  cell_contact_terms();
-  wall_fluid_terms(fluid_now, density_step_s > 0);
-  timer_.lap(Phase::WallFluid);
-  plate_terms();
-  timer_.lap(Phase::Plates);
+  field_.forces(s_, now, wall_force_, energy_power_W_, timer_);
 }
 
 // The wall surface (area, volume, normals) and the smoothing length of Eq 6: h = (D / D0) h0, D of
@@ -215,48 +207,13 @@ void Simulation::update_geometry() {
     throw NumericalFailure(msg.str());
   }
   s_.smoothing_length_m = equivalent_diameter_m(surface_.volume_m3) / s_.reference_diameter_m * *p_.h0_m;
-  fluid_wall_cutoff_m_ = fluid_->follow_smoothing_length(s_.smoothing_length_m);
+  fluid_wall_cutoff_m_ = fluid_.model->follow_smoothing_length(s_.smoothing_length_m);
 }
 
 void Simulation::update_neighbours() {
   neighbours_.update(s_.fluid.x, s_.wall.x, 2.0 * s_.smoothing_length_m, fluid_wall_cutoff_m_, threads_, moved_since_lists_m_,
                      s_.box);  // the period of the moment: a dried slab's has shrunk from the one built
   moved_since_lists_m_ = 0;
-}
-
-// Stiff (Eq 15), contraction (Eq 21, ramped during drying) and damping (Eq 16) on every bond.
-void Simulation::wall_terms() {
-  const BondSums bonds =
-      add_bond_forces(s_.wall, mesh_, bond_law_, contraction_ramp(), threads_, s_.bond_plastic_elongation_m, wall_force_,
-                      bond_scratch_);
-  s_.energy.integral[kPlasticLoss] += bonds.plastic_loss_J;  // at fixed positions: a jump, not a rate
-  s_.wall_tension_N_m = bonds.tension_times_length / (2.0 * surface_.area_m2);
-  energy_power_W_[kDampingLoss] = bonds.damping_loss_W;
-  // The drying ramp moves P_T and L_ref (drying.hpp): the stored energy changes at fixed particles.
-  const double ramp_rate = s_.stage == Stage::Drying ? drying::smoothstep_ramp_rate(s_.time_s, p_.ramp_time_s) : 0.0;
-  const double drying_share = (1.0 - p_.dryness) * ramp_rate;  // d/dt of (1 - X) ramp
-  energy_power_W_[kDrive] = ramp_rate == 0 ? 0.0
-                                           : drive_power_W(fluid_->stored_energy_per_turgor_m3(s_, eos()),
-                                                           -p_.turgor_Pa * drying_share,
-                                                           bonds.contraction_times_l0_N_m,
-                                                           p_.contraction_ratio * drying_share);
-  timer_.lap(Phase::WallBonds);
-  bending_.add_forces(s_.wall.x, surface_.triangles, threads_, wall_force_);
-  timer_.lap(Phase::Bending);
-}
-
-// Contact and middle lamella between the walls of different cells (cell_contact.hpp); none for one cell.
-void Simulation::cell_contact_terms() {
-  if (cells_.count() == 1) return;
-  Eigen::Vector2d period_virial_J;
-  add_cell_contact_forces(s_.wall.x, neighbours_.wall_wall(), lamella_, contact_law_, s_.box, s_.lamella_intact,
-                          s_.lamella_peak_opening_m, wall_force_, &period_virial_J);
-  if (s_.box.periodic()) {
-    const Eigen::Vector2d stress = lateral_stress_Pa(period_virial_J, s_.box, cell_height_m(s_.wall.x));
-    s_.lateral_stress_x_Pa = stress.x();
-    s_.lateral_stress_y_Pa = stress.y();
-  }
-  timer_.lap(Phase::CellContact);
 }
 
 // A periodic slab's period follows zero lateral stress in drying, and in compression if unconfined
@@ -271,44 +228,16 @@ void Simulation::follow_lateral_stress(double dt) {
   }
 }
 
-// The wall-fluid coupling (Lennard-Jones or the fluid's pressure, coupling.model); also the outward
-// push on the wall that the pressure closure and the Young-Laplace check compare with the fluid pressure.
-// weights_fresh: advance_density has weighed the pressure coupling's pairs at these positions.
-void Simulation::wall_fluid_terms(const FluidContext& fluid_now, bool weights_fresh) {
-  fluid_->couple_to_wall(s_, fluid_now, weights_fresh, coupling_on_wall_, backstop_on_wall_, energy_power_W_);
-  const std::vector<double> outward = sum_by_cell(threads_, cells_.wall, [&](Eigen::Index begin, Eigen::Index end) {
-    return add_coupling(coupling_on_wall_, surface_.vertex_normal, begin, end, wall_force_);
-  });
-  cell_wall_pressure_Pa_.resize(outward.size());
-  double outward_sum = 0;
-  for (std::size_t c = 0; c < outward.size(); ++c) {
-    cell_wall_pressure_Pa_[c] = outward[c] / surface_.cell_area_m2[c];
-    outward_sum += outward[c];
-  }
-  s_.wall_pressure_Pa = outward_sum / surface_.area_m2;
-}
-
-// Eq 22 during compression; the first contact of the top plate starts the plate strain.
-void Simulation::plate_terms() {
-  Plates& plates = s_.plates;
-  energy_power_W_[kPlateWork] = 0;
-  if (!plates.active) return;
-  add_plate_forces(s_.wall.x, plate_law_, plates, wall_force_, threads_);
-  // The wall pushes up; the plate moves down (negative speed while it unloads).
-  energy_power_W_[kPlateWork] = plates.force_top_N * top_plate_speed_m_s(plates, plate_motion_);
-  if (std::isnan(plates.first_contact_top_z_m) && plates.force_top_N > 0) plates.first_contact_top_z_m = plates.top_z_m;
-}
-
 void Simulation::kick(double half_dt) {
-  add_half_kick(energy_power_W_, half_dt, !fluid_->density_in_drift(), s_.energy);
-  fluid_->kick(s_, half_dt, threads_);
+  add_half_kick(energy_power_W_, half_dt, !(fluid_.particles && fluid_.particles->density_in_drift()), s_.energy);
+  fluid_.leapfrog->kick(s_, half_dt, threads_);
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
     add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);
   });
 }
 
 void Simulation::drift(double dt) {
-  const double fluid_v2 = fluid_->drift(s_, dt, threads_);
+  const double fluid_v2 = fluid_.particles ? fluid_.particles->drift(s_, dt, threads_) : 0.0;
   const double wall_v2 = reduce_blocks<double>(
       threads_, s_.wall.size(),
       [&](Eigen::Index begin, Eigen::Index end) { return drift_columns(dt, s_.wall.v, begin, end, s_.wall.x); },
@@ -328,7 +257,7 @@ void Simulation::start_at_rest() {
   s_.wall.v.setZero();
   s_.time_s = 0;
   s_.step = s_.stage_step = 0;
-  s_.initial_fluid_mass_kg = fluid_->mass_kg(s_);
+  s_.initial_fluid_mass_kg = fluid_.model->mass_kg(s_);
   s_.reference_diameter_m = equivalent_diameter_m(surface_.volume_m3);
   neighbours_.invalidate();
   compute_rates();
@@ -350,7 +279,7 @@ void Simulation::check_state() const {
 // model.md §7: dt must stay under the fluid's limits (the constant wall-spring limit is checked once, in
 // the constructor).
 void Simulation::check_time_step() const {
-  const std::string violation = fluid_->time_step_violation(s_, fluid_context());
+  const std::string violation = fluid_.leapfrog->time_step_violation(s_, fluid_context());
   if (!violation.empty()) throw NumericalFailure(where() + ": " + violation);
 }
 
@@ -412,7 +341,7 @@ void Simulation::start_compression() {
   // Rates and lists anew at this state, so a run continued from a saved state is bit-identical.
   neighbours_.invalidate();
   compute_rates();
-  fluid_->start_compression(s_, fluid_context());
+  if (fluid_.particles) fluid_.particles->start_compression(s_, fluid_context());
 }
 
 void Simulation::restore(const State& saved) {
@@ -425,8 +354,8 @@ void Simulation::restore(const State& saved) {
 
 Record Simulation::record() const {
   const LoadPartition load =
-      top_plate_load(s_.wall.x, wall_force_, coupling_on_wall_, backstop_on_wall_, plate_law_, s_.plates);
-  Record r = measure(s_, mesh_, cells_, surface_, p_, fluid_->readings(s_, cells_, surface_, eos()), load);
+      top_plate_load(s_.wall.x, wall_force_, push_->on_wall(), push_->backstop_on_wall(), plate_law_, s_.plates);
+  Record r = measure(s_, mesh_, cells_, surface_, p_, fluid_.model->readings(s_, cells_, surface_, eos()), load);
   add_energy_account(energy_terms_now(), s_.energy.initial_J, r);
   return r;
 }

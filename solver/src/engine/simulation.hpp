@@ -1,21 +1,22 @@
 #pragma once
-// One run of a tissue (one cell, or several: model.md §10): the state, and the step that advances it
-// (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
-// -> fluid forces -> wall forces -> forces between cells -> wall-fluid forces -> plates -> integrate
-// -> checks. The fluid is a model of its own behind fluid_model.hpp (SPH: sph_fluid.hpp); the engine
-// keeps the wall, the contacts between cells, the plates and the order of the step.
+// One run of a tissue (one cell, or several: model.md §10): the state, and the leapfrog step that advances
+// it (model.md §2-7). The step reads like the model: geometry -> neighbours -> density and mass transfer
+// -> fluid forces -> the force field on the wall (its springs, bending, the contacts between cells, the
+// fluid's push, the plates: force_field.hpp) -> integrate -> checks. The fluid is a model of its own,
+// seen through the faces of fluid_model.hpp; the quasi-static scheme (quasi_static.hpp) steps the same
+// state through the same force field.
 #include <cmath>
 #include <memory>
 #include <string>
 
 #include "core/params.hpp"
 #include "core/state.hpp"
-#include "engine/cavity_fluid.hpp"
 #include "engine/energy_account.hpp"
 #include "engine/fluid_model.hpp"
 #include "engine/measures.hpp"
 #include "engine/phase_timer.hpp"
-#include "engine/sph_fluid.hpp"
+#include "engine/force_field.hpp"
+#include "engine/force_terms.hpp"
 #include "geometry/neighbours.hpp"
 #include "geometry/heterogeneity.hpp"
 #include "geometry/surface.hpp"
@@ -60,13 +61,13 @@ class Simulation {
   }
   const WallMesh& mesh() const { return mesh_; }
   const BondLaw& bond_law() const { return bond_law_; }
-  const Bending& bending() const { return bending_; }
-  const FluidModel& fluid() const { return *fluid_; }
-  // The SPH fluid of the case; throws std::logic_error if its fluid is another model.
-  const SphFluid& sph_fluid() const;
-  // The closed-cell fluid of the case, for the quasi-static increments (quasi_static.hpp) and the
-  // settle; throws std::logic_error if its fluid is another model.
-  CavityFluid& cavity_fluid();
+  const FluidModel& fluid() const { return *fluid_.model; }
+  // The fluid's quasi-static face (fluid_model.hpp), for the increments of the quasi-static scheme, the
+  // closed cells' settle and the volumetric modulus; null for a fluid that has none (SPH).
+  IncrementFluid* fluid_increments() { return fluid_.increments; }
+  // The terms on the wall, and what they read of the moment (force_field.hpp).
+  const ForceField& force_field() const { return field_; }
+  ForceContext force_context() const;
   const Params& params() const { return p_; }
   EquationOfState eos() const;  // with the turgor of the moment
   double turgor_Pa() const;      // P_T: ramps from P_T0 to P_T(X) during drying (drying.hpp)
@@ -87,24 +88,23 @@ class Simulation {
     moved_since_lists_m_ = INFINITY;  // the settle moves the particles itself
     compute_rates();
   }
-  const Eigen::Matrix3Xd& fluid_force() const { return fluid_->particle_force(); }
+  // The force on each fluid particle (none for a fluid without particles).
+  const Eigen::Matrix3Xd& fluid_force() const;
   const Eigen::Matrix3Xd& wall_force() const { return wall_force_; }
   void start_at_rest();
-  // For a relaxation of the wall (quasi_static.hpp): the plates' law, the drying ramp now, the powers of
-  // the last force evaluation, what the fluid reads of the step, every term of the energy account now.
+  // For a relaxation of the wall (quasi_static.hpp): the plates' law, the powers of the last force
+  // evaluation, what the fluid reads of the step, every term of the energy account now.
   const PlateLaw& plate_law() const { return plate_law_; }
-  double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
   const EnergyValues& power_W() const { return energy_power_W_; }
   FluidContext fluid_context() const;
   EnergyValues energy_terms_now() const;
 
   // Per cell: the wall pressure (outward push along the normals / the cell's wall area) and the mean
   // fluid pressure, at the last force evaluation.
-  const std::vector<double>& cell_wall_pressure_Pa() const { return cell_wall_pressure_Pa_; }
-  std::vector<double> cell_mean_fluid_pressure_Pa() const { return fluid_->cell_mean_pressure_Pa(cells_); }
+  const std::vector<double>& cell_wall_pressure_Pa() const { return push_->cell_wall_pressure_Pa(); }
+  std::vector<double> cell_mean_fluid_pressure_Pa() const { return fluid_.model->cell_mean_pressure_Pa(cells_); }
   const CellRanges& cells() const { return cells_; }
   const std::vector<LamellaBond>& lamella() const { return lamella_; }
-  const CellContactLaw& contact_law() const { return contact_law_; }
   const WallSurface& surface() const { return surface_; }
 
  private:
@@ -116,11 +116,9 @@ class Simulation {
   void compute_rates(double density_step_s = 0);
   void update_geometry();
   void update_neighbours();
-  void wall_terms();
-  void cell_contact_terms();
+  double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
+  void lay_out_force_field();
   void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
-  void wall_fluid_terms(const FluidContext& fluid_now, bool weights_fresh);
-  void plate_terms();
   void kick(double half_dt);
   void drift(double dt);
   void check_state() const;
@@ -136,20 +134,20 @@ class Simulation {
   CellRanges cells_;
   std::vector<LamellaBond> lamella_;
   CellContactLaw contact_law_;
-  std::vector<double> cell_wall_pressure_Pa_;
   State s_;
   Bending bending_;
   NeighbourLists neighbours_;
-  std::unique_ptr<FluidModel> fluid_;
+  Fluid fluid_;
   double fluid_wall_cutoff_m_ = 0;  // of the wall-fluid pair list, at the current h (the fluid's choice)
   PlateLaw plate_law_;
   PlateMotion plate_motion_;
   BondLaw bond_law_;
+  ForceField field_;
+  const FluidPushTerm* push_ = nullptr;  // the field's fluid term, for its push on the wall
 
   // Rates at the current positions.
-  Eigen::Matrix3Xd wall_force_, coupling_on_wall_, backstop_on_wall_;
+  Eigen::Matrix3Xd wall_force_;
   EnergyValues energy_power_W_{};  // of the terms integrated over the kicks, at the current positions
-  BondScratch bond_scratch_;
   WallSurface surface_;  // area, volume and normals at the current positions
   double Lp_m_per_s_Pa_;
   double moved_since_lists_m_ = INFINITY;  // how far any particle can have moved since the lists looked

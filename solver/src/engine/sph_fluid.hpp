@@ -15,7 +15,7 @@
 
 namespace cellsim {
 
-class SphFluid final : public FluidModel {
+class SphFluid final : public FluidModel, public LeapfrogFluid, public ParticleFluid {
  public:
   // factors.viscosity: each cell's fluid its own viscosity (heterogeneity.viscosity_cv), else uniform.
   SphFluid(const Params& p, const CellRanges& cells, const PropertyFactors& factors);

@@ -18,15 +18,14 @@ struct PressureVolume {
 };
 
 // The cells' mean pressure and volume at equilibrium with each mass scaled by `scale`, the mass kept.
-PressureVolume relaxed_with_mass(Simulation& sim, double scale) {
+PressureVolume relaxed_with_mass(Simulation& sim, IncrementFluid& increments, double scale) {
   State& s = sim.mutable_state();
   for (double& mass : s.cavity_mass_kg) mass *= scale;
-  CavityFluid& cavity = sim.cavity_fluid();
   sim.refresh_rates();
-  cavity.begin_increment(s, sim.fluid_context(), 0.0);  // dt = 0: Eq 11 moves no water
-  const Equilibrium eq =
-      relax_wall(sim, kToleranceShare * sim.params().equilibrium_tolerance, sim.params().relaxation_max_iterations);
-  cavity.end_increment(s, sim.fluid_context());
+  increments.begin_increment(s, sim.fluid_context(), 0.0);  // dt = 0: Eq 11 moves no water
+  const Equilibrium eq = relax_wall(sim, increments, kToleranceShare * sim.params().equilibrium_tolerance,
+                                    sim.params().relaxation_max_iterations);
+  increments.end_increment(s, sim.fluid_context());
   if (!eq.converged) {
     std::ostringstream msg;
     msg << "the volumetric modulus: the wall with its water x " << scale << " did not reach equilibrium within "
@@ -42,11 +41,12 @@ PressureVolume relaxed_with_mass(Simulation& sim, double scale) {
 }  // namespace
 
 double volumetric_modulus_Pa(Simulation& sim) {
-  if (sim.params().fluid_model != kCavityFluid) return std::nan("");
+  IncrementFluid* increments = sim.fluid_increments();  // the closed cell's: SPH's has no equilibrium to probe
+  if (!increments) return std::nan("");
   const State saved = sim.state();
-  const PressureVolume more = relaxed_with_mass(sim, 1 + kMassStep);
+  const PressureVolume more = relaxed_with_mass(sim, *increments, 1 + kMassStep);
   sim.restore(saved);
-  const PressureVolume less = relaxed_with_mass(sim, 1 - kMassStep);
+  const PressureVolume less = relaxed_with_mass(sim, *increments, 1 - kMassStep);
   sim.restore(saved);
   const double volume_m3 = sim.surface().volume_m3;
   return volume_m3 * (more.pressure_Pa - less.pressure_Pa) / (more.volume_m3 - less.volume_m3);

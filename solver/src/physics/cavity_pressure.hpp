@@ -5,9 +5,12 @@
 // (de = P / rho^2 drho: d(M e)/dV = -P), so the energy account closes.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "geometry/block_stiffness.hpp"
+#include "geometry/wall_mesh.hpp"
 #include "physics/eos.hpp"
 
 namespace cellsim {
@@ -15,6 +18,13 @@ namespace cellsim {
 // dV/dx_k of the signed-tetrahedra volume: a sixth of the sum of the area normals (v - u) x (w - u) of
 // the triangles at k, which is WallSurface::vertex_normal / 6 (exact for a closed surface).
 inline Eigen::Vector3d volume_gradient(const Eigen::Vector3d& vertex_normal) { return vertex_normal / 6.0; }
+
+// dV/dx of each cell's enclosed volume on its wall particles, stacked (x, y, z per particle) [m^2].
+inline Eigen::VectorXd stacked_volume_gradients(const Eigen::Matrix3Xd& vertex_normal) {
+  Eigen::VectorXd g(vertex_normal.size());
+  for (Eigen::Index k = 0; k < vertex_normal.cols(); ++k) g.segment<3>(3 * k) = volume_gradient(vertex_normal.col(k));
+  return g;
+}
 
 // Eq 11 over an increment dt, backward Euler, for one closed cell (the cell as one particle, n_f = 1):
 // the density rho at which M_n + dt dM/dt(rho) fills V, with dM/dt = -A L_p rho (P(rho) - P_T), i.e.
@@ -56,5 +66,11 @@ inline double increment_volume_stiffness_Pa_m3(double rho, double volume_m3, dou
   const double rho_dP = volume_m3 * cavity_volume_stiffness_Pa_m3(rho, volume_m3, eos);
   return rho_dP / (volume_m3 + a_m3_Pa * (eos.pressure(rho) - eos.turgor_Pa + rho_dP));
 }
+
+// The pressures' share of the wall's stiffness, added into K, for closed cells of uniform pressure P: -P
+// d2V/dx2 of each cell's enclosed volume at fixed P, the follower stiffness of a pressure that turns with
+// the wall. Symmetric, indefinite; a cell's blocks join only the corners of its triangles (the bonds' pattern).
+void add_pressure_follower_stiffness(const Eigen::Matrix3Xd& x, const WallMesh& mesh,
+                                     const std::vector<double>& cell_pressure_Pa, BlockStiffness& K);
 
 }  // namespace cellsim

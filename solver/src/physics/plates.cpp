@@ -77,4 +77,11 @@ void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plate
   plates.contacts = load.contacts;
 }
 
+void add_plate_stiffness(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const Plates& plates, BlockStiffness& K) {
+  if (!plates.active) return;
+  const Eigen::Matrix3d along_z = Eigen::Vector3d(0, 0, law.stiffness_N_m).asDiagonal();
+  for (int k = 0; k < static_cast<int>(wall_x.cols()); ++k)
+    if (plate_overlap(wall_x.col(k), law, plates).touches()) K.add(k, k, along_z);
+}
+
 }  // namespace cellsim

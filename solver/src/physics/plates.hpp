@@ -6,6 +6,7 @@
 
 #include "core/params.hpp"
 #include "core/state.hpp"
+#include "geometry/block_stiffness.hpp"
 
 namespace cellsim {
 
@@ -33,5 +34,9 @@ double plate_energy_J(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const
 // threads: as `cellsim run --threads` (the plate forces are summed in fixed blocks, threads.hpp).
 void add_plate_forces(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, Plates& plates, Eigen::Matrix3Xd& wall_force,
                       int threads = 1);
+
+// Eq 22's stiffness, -dF/dx, added into K: k_pw along z on each wall particle a plate touches (the
+// force field's plates face, engine/force_terms.hpp); nothing while the plates are not placed.
+void add_plate_stiffness(const Eigen::Matrix3Xd& wall_x, const PlateLaw& law, const Plates& plates, BlockStiffness& K);
 
 }  // namespace cellsim
