@@ -26,7 +26,7 @@ def check_figures(config, out, root, tmp_path, figures):
     """Each of `figures` under out/figures/ shows what its spec asks for, drawn from out/runs/."""
     assert figures, "no figure to check"
     for fig in figures:
-        figure = render.draw(config, fig, out, root)
+        figure = render.draw(config, fig, render.files_under(config, fig, out), root)
         CHECKS[config["figures"][fig]["family"]](config, fig, figure, out)
         png, pdf = tmp_path / f"{fig}.png", tmp_path / f"{fig}.pdf"
         common.save(figure, png, pdf)
@@ -48,7 +48,7 @@ def visible(ax, x, y):
 
 def check_curves(config, fig, figure, out):
     spec = config["figures"][fig]
-    cases, runs = render.inputs(config, fig, out)
+    cases, runs = render.inputs(config, fig, render.files_under(config, fig, out))
     series, _ = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
     stage = spec.get("stage", "compression")
     if stage != "all":
@@ -98,7 +98,7 @@ def check_shapes(config, fig, figure, out):
     """One slice per (row, column) that has a case: the wall cut as segments, fluid dots where the fluid is
     particles (a closed cell's is one pressure, drawn as none: the title then names no fluid), titled."""
     spec = config["figures"][fig]
-    cases, _ = render.inputs(config, fig, out)
+    cases, _ = render.inputs(config, fig, render.files_under(config, fig, out))
     particles = any(matrix.get_key(c.case, "fluid.model") in (None, "sph") for c in cases.values())
     assert ("fluid blue" in " ".join(figure._suptitle.get_text().split())) == particles, f"{fig}: the title's fluid"
 
@@ -144,7 +144,7 @@ def check_shrinkage(config, fig, figure, out):
     """V/V0 against X/X0: a line per value of its axis (a tissue's hull and its cells' own volumes
     apart), each point a case's end-of-drying volume at that case's dryness."""
     spec = config["figures"][fig]
-    cases, runs = render.inputs(config, fig, out)
+    cases, runs = render.inputs(config, fig, render.files_under(config, fig, out))
     _, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
     (ax,) = data_panels(figure)
     tissues = summary.groupby(spec["lines"])["dried_tissue_V_over_V0"].apply(lambda v: v.notna().any())
@@ -163,7 +163,7 @@ def check_modulus(config, fig, figure, out):
     """Moduli against X/X0: a panel per modulus and panel value, a line per group of the line axes,
     every point a case's modulus at its dryness; the references fitted alike, marked at X/X0 = 1."""
     spec = config["figures"][fig]
-    cases, runs = render.inputs(config, fig, out)
+    cases, runs = render.inputs(config, fig, render.files_under(config, fig, out))
     _, summary = aggregate.tables([(cases[n], runs[n][0]) for n in cases])
     panels = data_panels(figure)
     n_panel_values = summary[spec["panels"]].nunique() if spec.get("panels") else 1

@@ -53,7 +53,7 @@ def test_the_named_figures_draw_the_other_runs_curves_dashed_and_the_closed_cell
     out, compare = converged_run
     config = workflow_config(root, CONVERGED + [str(compare)], out)
     for fig in ("fig07", "fig15"):
-        figure = render.draw(config, fig, str(out), str(root))
+        figure = render.draw(config, fig, render.files_under(config, fig, str(out)), str(root))
         cases = matrix.figure_cases(config, fig, matrix.expand(config))
         drawn = lambda style: [ln for ax in figure.axes for ln in ax.get_lines() if ln.get_linestyle() == style  # noqa: E731
                                and len(ln.get_xdata()) and ln.get_color() != "black"]  # the apple references are black
@@ -61,7 +61,7 @@ def test_the_named_figures_draw_the_other_runs_curves_dashed_and_the_closed_cell
         closed = [n for n in cases if columns.counterpart_name(config, matrix.expand(config), matrix.expand(config)[n],
                                                                {"fluid": "closed_cell"})]
         assert len(drawn(":")) == len(closed) >= 1, fig
-    figure = render.draw(config, "fig11", str(out), str(root))  # not named: no overlay
+    figure = render.draw(config, "fig11", render.files_under(config, "fig11", str(out)), str(root))  # not named: no overlay
     assert not [ln for ax in figure.axes for ln in ax.get_lines() if ln.get_linestyle() == "--" and
                 ln.get_color() != "black"]
 
@@ -101,7 +101,7 @@ def test_a_comparison_made_by_other_code_says_so_on_the_page(root, converged_run
     from analysis import comparison
     note = comparison.made_by_note(config)
     assert "was made by cellsim 0.1.0, commit 0123456789ab" in note and str(stale) in note
-    figure = render.draw(config, "fig07", str(out), str(root))
+    figure = render.draw(config, "fig07", render.files_under(config, "fig07", str(out)), str(root))
     labels = [t.get_text() for t in figure.axes[-1].get_legend().get_texts()]
     assert any("(made by commit 0123456789ab)" in label for label in labels), labels
     (stale / "tables" / "provenance.json").unlink()
