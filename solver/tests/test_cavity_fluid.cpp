@@ -7,8 +7,12 @@
 #include <cmath>
 #include <vector>
 #include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
 
 #include "cli_helpers.hpp"
+#include "core/errors.hpp"
 #include "engine/cavity_fluid.hpp"
 #include "engine/quasi_static.hpp"
 #include "engine/settle.hpp"
@@ -242,6 +246,57 @@ TEST(QuasiStatic, AYieldingWallKeepsOnlyTheHistoryOfItsAcceptedPoints) {
   EXPECT_EQ(b.sim.state().energy.integral[kPlasticLoss], plastic_loss_J);
   const Record r = b.sim.record();
   EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]);
+}
+
+// Adaptive increments (time.min_increment_fraction < 1), cutting at every loss above 1e-9 of the loads'
+// work: each step still ends on the plate position it asks for (the records stay on the asked strains, to
+// round-off of the increments' sum), the account closes as the fixed steps' does, and the cut increments cost
+// more relaxations than the fixed ones.
+TEST(QuasiStatic, AdaptiveIncrementsKeepTheStepsPlatesAndTheAccount) {
+  const auto compressed = [](double least_fraction) {
+    auto b = std::make_unique<Built>(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400},
+                                                            {"min_increment_fraction", least_fraction},
+                                                            {"snap_loss_share", 1e-9}}}}));
+    settle(b->sim, 100000, 0);
+    QuasiStaticScheme scheme(b->sim);
+    scheme.step();
+    scheme.start_compression();
+    std::vector<double> top_z_m;
+    double evaluations = 0;
+    for (int n = 0; n < 12; ++n) {
+      scheme.step();
+      top_z_m.push_back(b->sim.state().plates.top_z_m);
+      evaluations += b->sim.state().relaxation_evaluations;
+    }
+    const Record r = b->sim.record();
+    EXPECT_GT(r.energy[kPlateWork], 0.0);
+    EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]) << "least fraction " << least_fraction;
+    return std::make_pair(top_z_m, evaluations);
+  };
+  const auto fixed = compressed(1.0), adaptive = compressed(1.0 / 16);
+  ASSERT_EQ(fixed.first.size(), adaptive.first.size());
+  for (std::size_t n = 0; n < fixed.first.size(); ++n)
+    EXPECT_NEAR(adaptive.first[n], fixed.first[n], 1e-12 * std::abs(fixed.first[n])) << "step " << n;
+  EXPECT_GT(adaptive.second, fixed.second);
+}
+
+// A step whose relaxation fails at its least increment stops (exit 3 through NumericalFailure), naming its
+// strain and the key that bounds the cuts.
+TEST(QuasiStatic, AStepThatCannotBeCutFurtherStopsNamingItsStrainAndTheKey) {
+  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_fraction", 0.25},
+                                 {"relaxation_max_iterations", 2}}}}));
+  settle(b.sim, 100000, 0);
+  QuasiStaticScheme scheme(b.sim);
+  try {
+    scheme.start_compression();
+    for (int n = 0; n < 20; ++n) scheme.step();
+    FAIL() << "no step failed";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("strain"), std::string::npos) << what;
+    EXPECT_NE(what.find("time.min_increment_fraction = 0.25"), std::string::npos) << what;
+    EXPECT_NE(what.find("time.relaxation_max_iterations = 2"), std::string::npos) << what;
+  }
 }
 
 // The volumetric modulus V dP/dV at rest is the wall's: the water's K decides how much of an injected mass

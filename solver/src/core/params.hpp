@@ -134,6 +134,8 @@ struct Params {
   Choice time_scheme = kDynamic;
   double equilibrium_tolerance = 0;     // quasi_static: largest wall force / its pressure load to stop at
   std::int64_t relaxation_max_iterations = 0;  // quasi_static: the cap of one relaxation
+  double min_increment_fraction = 1;    // quasi_static: the least increment / dt (1: every increment is dt)
+  double snap_loss_share = 0;           // quasi_static, adaptive: the relaxation loss / loads' work that cuts
 
   // output
   std::int64_t record_every = 0;        // steps between time-series records

@@ -215,6 +215,9 @@ namespace {
 // than kLargestPeriodMove a move, kMaxPeriodMoves moves a step.
 constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
 constexpr int kMaxPeriodMoves = 40;
+// Adaptive increments (time.min_increment_fraction < 1): a cut keeps a quarter of the increment, as Abaqus'
+// automatic increments do; an easy one doubles the next; a rest below kLeastRest of dt joins the increment.
+constexpr double kCutTo = 0.25, kGrowBy = 2.0, kLeastRest = 1e-9;
 
 // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period
 // too: staggered, the wall relaxed at a fixed period, then the period strained (the cells moving with it
@@ -278,19 +281,20 @@ void QuasiStaticScheme::start_compression() {
   if (sim_.params().cell_rotation == kRotationHeld) rotation_hold_.emplace(sim_.state().wall.x);
 }
 
-void QuasiStaticScheme::step() {
+// One increment of h_s: the loads move (the plates, the drying ramp), the wall touching a plate with it (the
+// predictor above), Eq 11 is integrated over it and the wall relaxed. The loads' work over it is the
+// trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
+// stored energy: the rates of the last evaluation are the start's); the relaxation's loss closes the account
+// from the stored energy's jump over the move.
+QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();
   const Params& p = sim.params();
   State& s = sim.mutable_state();
-  // The loads move (the plates, the drying ramp), the wall touching a plate with it (the predictor above).
-  // Their work over the step is the trapezoid of their powers at the two equilibria (the plate's force x its
-  // speed, the ramp's rate of the stored energy: the rates of the last evaluation are the start's); the
-  // relaxation's loss closes the account from the stored energy's jump over the move.
   const EnergyValues power_at_start_W = sim.power_W();
   const EnergyValues stored_before = sim.energy_terms_now();
   const Plates plates_before = s.plates;
-  sim.advance_loads(p.dt_s);
+  sim.advance_loads(h_s);
   move_touching_particles_with_plates(sim, plates_before);
   if (hold) hold->project(s.wall.x);  // back onto C = 0: the least move
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
@@ -301,41 +305,77 @@ void QuasiStaticScheme::step() {
   const double dissipated_in_move_J = stored_at_start[kPlasticLoss] + stored_at_start[kLamellaLoss] -
                                       stored_before[kPlasticLoss] - stored_before[kLamellaLoss];
 
-  increments_.begin_increment(s, sim.fluid_context(), p.dt_s);
-  const Equilibrium eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations);
+  increments_.begin_increment(s, sim.fluid_context(), h_s);
+  Increment done;
+  done.eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations);
   const EnergyValues& power_at_end_W = sim.power_W();
-  double loads_J = 0;
   for (EnergyTermId load : {kPlateWork, kDrive}) {
-    const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * p.dt_s;
+    const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * h_s;
     s.energy.integral[load] += work_J;
-    loads_J += work_J;
+    done.loads_J += work_J;
   }
   // The relaxation took the potential down from the start's jump; what the loads did not put in of that
   // jump it dissipated too (the account: stored energy now - before = loads' work - losses).
-  s.energy.integral[kRelaxationLoss] += eq.loss_J + loads_J - jump_J - dissipated_in_move_J;
+  done.loss_J = done.eq.loss_J + done.loads_J - jump_J - dissipated_in_move_J;
+  s.energy.integral[kRelaxationLoss] += done.loss_J;
   s.energy.integral[kMassTransfer] += increments_.end_increment(s, sim.fluid_context());
-  s.relaxation_residual = eq.residual;
-  s.relaxation_evaluations = static_cast<double>(eq.iterations);
-  if (eq.period_unbalanced) {
-    std::ostringstream msg;
-    msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "
-        << (s.stage == Stage::Drying ? "drying" : "compression") << "): the periodic slab's period did not reach "
-        << "zero lateral stress within " << kMaxPeriodMoves << " moves (lateral stress " << s.lateral_stress_x_Pa / 1e3
-        << " / " << s.lateral_stress_y_Pa / 1e3 << " kPa, time.equilibrium_tolerance = " << p.equilibrium_tolerance
-        << " of the load); give a smaller time.dt_ns";
-    throw NumericalFailure(msg.str());
+  s.relaxation_residual = done.eq.residual;
+  return done;
+}
+
+// A step of time.dt_ns in increments: one, unless time.min_increment_fraction < 1 lets the scheme cut an
+// increment to kCutTo of itself where its relaxation fails or releases more than time.snap_loss_share of
+// the loads' work over it (a snap), and grow it kGrowBy after an easy one (a quarter of that share at most),
+// back up to dt. The state is recorded once a step, at the strain the case asked for.
+void QuasiStaticScheme::step() {
+  const Params& p = sim_.params();
+  const bool adaptive = p.min_increment_fraction < 1;
+  const double least_s = p.min_increment_fraction * p.dt_s;
+  if (!increment_s_) increment_s_ = p.dt_s;
+  double left_s = p.dt_s;
+  std::int64_t evaluations = 0;
+  while (left_s > 0) {
+    double h_s = std::min(*increment_s_, left_s);
+    if (left_s - h_s < kLeastRest * p.dt_s) h_s = left_s;  // no sliver of round-off left over
+    std::optional<State> before;
+    if (adaptive) before = sim_.state();
+    const Increment done = advance_by(h_s);
+    evaluations += done.eq.iterations;
+    const bool failed = !done.eq.converged;
+    const bool snapped = done.loss_J > p.snap_loss_share * std::abs(done.loads_J);
+    if (adaptive && (failed || snapped) && h_s > least_s * (1 + kLeastRest)) {
+      sim_.restore(*before);
+      increment_s_ = std::max(kCutTo * h_s, least_s);
+      continue;
+    }
+    if (failed) fail(done.eq, h_s);
+    left_s -= h_s;
+    if (adaptive && done.loss_J <= 0.25 * p.snap_loss_share * std::abs(done.loads_J))
+      increment_s_ = std::min(kGrowBy * h_s, p.dt_s);
   }
-  if (!eq.converged) {
-    std::ostringstream msg;
-    msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "
-        << (s.stage == Stage::Drying ? "drying" : "compression") << "): the wall did not reach equilibrium within "
-        << "time.relaxation_max_iterations = " << p.relaxation_max_iterations << " (largest force "
-        << eq.residual << " of its pressure load, time.equilibrium_tolerance = " << p.equilibrium_tolerance
-        << "); give more iterations, a looser tolerance or a smaller time.dt_ns";
-    throw NumericalFailure(msg.str());
-  }
-  sim.refresh_rates();  // the rates at the increment's masses
-  sim.finish_step();
+  sim_.mutable_state().relaxation_evaluations = static_cast<double>(evaluations);
+  sim_.refresh_rates();  // the rates at the increment's masses
+  sim_.finish_step();
+}
+
+// Throws NumericalFailure naming the step, its strain, and what could let it through.
+void QuasiStaticScheme::fail(const Equilibrium& eq, double h_s) const {
+  const Params& p = sim_.params();
+  const State& s = sim_.state();
+  std::ostringstream msg;
+  msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "
+      << (s.stage == Stage::Drying ? "drying" : "compression, strain " + std::to_string(sim_.nominal_strain())) << ")";
+  if (h_s < p.dt_s) msg << ", in an increment of " << h_s / p.dt_s << " of time.dt_ns (time.min_increment_fraction = "
+                        << p.min_increment_fraction << ")";
+  if (eq.period_unbalanced)
+    msg << ": the periodic slab's period did not reach zero lateral stress within " << kMaxPeriodMoves
+        << " moves (lateral stress " << s.lateral_stress_x_Pa / 1e3 << " / " << s.lateral_stress_y_Pa / 1e3
+        << " kPa, time.equilibrium_tolerance = " << p.equilibrium_tolerance << " of the load); give a smaller time.dt_ns";
+  else
+    msg << ": the wall did not reach equilibrium within time.relaxation_max_iterations = " << p.relaxation_max_iterations
+        << " (largest force " << eq.residual << " of its pressure load, time.equilibrium_tolerance = "
+        << p.equilibrium_tolerance << "); give more iterations, a looser tolerance or a smaller time.dt_ns";
+  throw NumericalFailure(msg.str());
 }
 
 }  // namespace cellsim

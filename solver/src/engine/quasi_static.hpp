@@ -61,6 +61,12 @@ class QuasiStaticScheme final : public Scheme {
   const RotationHold* rotation_hold() const { return rotation_hold_ ? &*rotation_hold_ : nullptr; }
 
  private:
+  struct Increment {
+    Equilibrium eq;
+    double loss_J = 0, loads_J = 0;  // the relaxation's loss, the loads' work over the increment
+  };
+  Increment advance_by(double h_s);
+  [[noreturn]] void fail(const Equilibrium& eq, double h_s) const;
   // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period too.
   Equilibrium relax_wall_and_period(double tolerance, std::int64_t max_iterations);
 
@@ -68,6 +74,7 @@ class QuasiStaticScheme final : public Scheme {
   IncrementFluid& increments_;
   std::optional<RotationHold> rotation_hold_;
   std::optional<Eigen::Vector2d> period_modulus_;  // Pa per unit strain, per axis
+  std::optional<double> increment_s_;              // the next increment's length (adaptive increments)
 };
 
 }  // namespace cellsim

@@ -280,6 +280,15 @@ std::vector<ParamSpec> build_specs() {
               "a closed cell's relaxations (quasi_static steps, the volumetric modulus): the force evaluations one may "
               "take; beyond, the run stops (exit 3)",
               "engine/quasi_static.hpp"),
+      real("time.min_increment_fraction", "1", 1.0, &P::min_increment_fraction, 1, 0, false, 1, true,
+           "quasi_static: the shortest increment a step may be cut to, as a fraction of time.dt_ns (1: every "
+           "step one increment; below 1 a step's increment is cut to a quarter where its relaxation fails or "
+           "snaps, and doubles after easy ones, back to time.dt_ns; records stay once a step)",
+           "engine/quasi_static.hpp"),
+      real("time.snap_loss_share", "1", 1.0, &P::snap_loss_share, 0.05, 0, false, 1e6, true,
+           "quasi_static, adaptive increments: an increment whose relaxation releases more than this share of "
+           "the loads' work over it (a snap) is cut",
+           "engine/quasi_static.hpp"),
       // output
       integer("output.record_every", &P::record_every, 100, 1, 1e9,
               "steps between time-series records", "model.md §8"),
@@ -349,7 +358,8 @@ const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
         "coupling.backstop_range_over_dx", "settle.tolerance", "drying.steady_rms_speed_m_s",
         "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"}},
       {"fluid.model", "cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
-      {"time.scheme", "quasi_static", {"compression.cell_rotation"}},
+      {"time.scheme", "quasi_static",
+       {"compression.cell_rotation", "time.min_increment_fraction", "time.snap_loss_share"}},
       {"time.scheme", "dynamic", {"tissue.period_viscosity_Pa_s"}},
   };
   return keys;
