@@ -10,9 +10,10 @@ from analysis import aggregate, columns, comparison, matrix
 from analysis.figures import curves, model, modulus, shapes, shrinkage
 
 
-def files_under(config, fig, output_dir):
-    """The files of `fig` in a results folder, named as the workflow names them (workflow/rules/analysis.smk)."""
-    cases = matrix.expand(config)
+def files_under(config, fig, output_dir, cases=None):
+    """The files of `fig` in a results folder, as its `figure` rule lists them (workflow/rules/analysis.smk);
+    cases: matrix.expand(config), if the caller has it."""
+    cases = cases or matrix.expand(config)
     names = matrix.figure_cases(config, fig, cases)
     beside = columns.overlay_cases(config, fig, cases, {n: cases[n] for n in names})
     return {"runs": {n: f"{output_dir}/runs/{n}.h5" for n in names},

@@ -36,16 +36,16 @@ rule aggregate_target:
 
 
 def figure_inputs(wildcards):
+    # This run's files of the figure, as render.files_under names them: its cases' runs and dried states, and
+    # the claim columns' counterparts and band beside them (analysis/columns.py).
+    files = render.files_under(config, wildcards.fig, OUT, CASES)
     names = matrix.figure_cases(config, wildcards.fig, CASES)
-    runs = [run_file(n) for n in names]
-    dried = sorted({dried_file(CASES[n].dried) for n in names})
     refs = [config["references"][r]["file"] for r in config["figures"][wildcards.fig].get("references", [])]
     # The other run's results of the same cases, where they exist (compare_with; analysis/comparison.py).
     other = (list(comparison.other_runs(config, {n: CASES[n] for n in names}).values())
              if comparison.overlaid(config, wildcards.fig) else [])
-    # This run's claim columns beside them, and the first column's band (analysis/columns.py).
-    beside = [run_file(n) for n in sorted(columns.overlay_cases(config, wildcards.fig, CASES, {n: CASES[n] for n in names}))]
-    return {"runs": runs, "dried": dried, "references": refs, "other_runs": other, "column_runs": beside}
+    return {"runs": list(files["runs"].values()), "dried": sorted(files["dried"].values()), "references": refs,
+            "other_runs": other, "column_runs": [files["column_runs"][n] for n in sorted(files["column_runs"])]}
 
 
 rule figure:

@@ -6,6 +6,7 @@ from snakemake.exceptions import WorkflowError
 
 sys.path.insert(0, workflow.basedir)
 from analysis import columns, comparison, matrix  # noqa: E402
+from analysis.figures import render  # noqa: E402
 
 try:
     matrix.check(config, workflow.basedir)

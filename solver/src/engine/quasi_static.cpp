@@ -274,7 +274,8 @@ IncrementFluid& increments_of(Simulation& sim) {
   return *increments;
 }
 
-QuasiStaticScheme::QuasiStaticScheme(Simulation& sim) : sim_(sim), increments_(increments_of(sim)) {}
+QuasiStaticScheme::QuasiStaticScheme(Simulation& sim)
+    : sim_(sim), increments_(increments_of(sim)), increment_s_(sim.params().dt_s) {}
 
 void QuasiStaticScheme::start_compression() {
   sim_.start_compression();
@@ -331,11 +332,10 @@ void QuasiStaticScheme::step() {
   const Params& p = sim_.params();
   const bool adaptive = p.min_increment_fraction < 1;
   const double least_s = p.min_increment_fraction * p.dt_s;
-  if (!increment_s_) increment_s_ = p.dt_s;
   double left_s = p.dt_s;
   std::int64_t evaluations = 0;
   while (left_s > 0) {
-    double h_s = std::min(*increment_s_, left_s);
+    double h_s = std::min(increment_s_, left_s);
     if (left_s - h_s < kLeastRest * p.dt_s) h_s = left_s;  // no sliver of round-off left over
     std::optional<State> before;
     if (adaptive) before = sim_.state();

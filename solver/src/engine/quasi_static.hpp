@@ -74,7 +74,7 @@ class QuasiStaticScheme final : public Scheme {
   IncrementFluid& increments_;
   std::optional<RotationHold> rotation_hold_;
   std::optional<Eigen::Vector2d> period_modulus_;  // Pa per unit strain, per axis
-  std::optional<double> increment_s_;              // the next increment's length (adaptive increments)
+  double increment_s_;                             // the next increment's length (adaptive increments)
 };
 
 }  // namespace cellsim

@@ -149,7 +149,7 @@ void Simulation::step() {
   follow_lateral_stress(p_.dt_s);
   timer_.lap(Phase::Integration);
   ParticleFluid* particles = fluid_.particles;
-  compute_rates(particles && particles->density_in_drift() ? p_.dt_s : 0.0);
+  compute_rates(density_in_drift() ? p_.dt_s : 0.0);
   kick(0.5 * p_.dt_s);
   if (particles && s_.stage == Stage::Drying)
     particles->apply_drying_closure(s_, fluid_context(), cell_wall_pressure_Pa());
@@ -229,7 +229,7 @@ void Simulation::follow_lateral_stress(double dt) {
 }
 
 void Simulation::kick(double half_dt) {
-  add_half_kick(energy_power_W_, half_dt, !(fluid_.particles && fluid_.particles->density_in_drift()), s_.energy);
+  add_half_kick(energy_power_W_, half_dt, !density_in_drift(), s_.energy);
   fluid_.leapfrog->kick(s_, half_dt, threads_);
   for_blocks(threads_, s_.wall.size(), [&](Eigen::Index begin, Eigen::Index end) {
     add_scaled(half_dt / s_.wall.mass_kg, wall_force_, begin, end, s_.wall.v);

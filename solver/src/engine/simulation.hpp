@@ -117,6 +117,8 @@ class Simulation {
   void update_geometry();
   void update_neighbours();
   double contraction_ramp() const;  // of L_ref and P_T: smoothstep in drying (drying.hpp), 1 in compression
+  // time.density_update = drift, for a fluid of particles (a closed cell has no density to drift).
+  bool density_in_drift() const { return fluid_.particles && fluid_.particles->density_in_drift(); }
   void lay_out_force_field();
   void follow_lateral_stress(double dt);  // a periodic slab's period (model.md §10b)
   void kick(double half_dt);
