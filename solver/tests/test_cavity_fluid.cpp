@@ -280,6 +280,58 @@ TEST(QuasiStatic, AdaptiveIncrementsKeepTheStepsPlatesAndTheAccount) {
   EXPECT_GT(adaptive.second, fixed.second);
 }
 
+// Where the loads do no work (a drying cell past its ramp, whose water still drains) a relaxation releases
+// a little, which no share of the loads' zero work bounds: below the energy a relaxation resolves (its
+// tolerance's force over a bond), it is no snap. So with a snap share too large to cut in the ramp, the
+// adaptive drying is the fixed one, step for step (before that floor, every step past the ramp was cut to
+// its least increment).
+TEST(QuasiStatic, AdaptiveIncrementsDoNotCutAStepWhereTheLoadsDoNoWork) {
+  const auto dried = [](double least_fraction) {
+    Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 500}, {"snap_loss_share", 1e3},
+                                   {"min_increment_fraction", least_fraction}}},
+                         {"drying", {{"dryness", 0.5}}}}));
+    settle(b.sim, 100000, 0);
+    QuasiStaticScheme scheme(b.sim);
+    std::vector<double> evaluations;
+    for (int n = 0; n < 60; ++n) {  // the 20 us ramp and 10 us beyond
+      scheme.step();
+      evaluations.push_back(b.sim.state().relaxation_evaluations);
+    }
+    return evaluations;
+  };
+  const std::vector<double> fixed = dried(1.0), adaptive = dried(1.0 / 64);
+  EXPECT_EQ(adaptive, fixed);
+}
+
+// time.increment_move_over_spacing: an increment whose relaxation moves a wall particle farther than that
+// share of a bond is cut (the snap share set too large to cut), so a limit well below the plate's step (each step moves the plate 0.4 um,
+// about 7 % of the small cell's 5.6 um bond) cuts every step into several increments: more relaxations than without
+// the limit, the plates still where the steps ask, and the account closed.
+TEST(QuasiStatic, AnIncrementThatMovesTheWallFartherThanItsLimitIsCut) {
+  const auto compressed = [](double move_over_spacing) {
+    Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_fraction", 1.0 / 64},
+                                   {"snap_loss_share", 1e3}, {"increment_move_over_spacing", move_over_spacing}}}}));
+    settle(b.sim, 100000, 0);
+    QuasiStaticScheme scheme(b.sim);
+    scheme.start_compression();
+    std::vector<double> top_z_m;
+    double evaluations = 0;
+    for (int n = 0; n < 10; ++n) {
+      scheme.step();
+      top_z_m.push_back(b.sim.state().plates.top_z_m);
+      evaluations += b.sim.state().relaxation_evaluations;
+    }
+    const Record r = b.sim.record();
+    EXPECT_GT(r.energy[kPlateWork], 0.0);
+    EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]) << "limit " << move_over_spacing;
+    return std::make_pair(top_z_m, evaluations);
+  };
+  const auto unlimited = compressed(0), limited = compressed(0.005);
+  for (std::size_t n = 0; n < unlimited.first.size(); ++n)
+    EXPECT_NEAR(limited.first[n], unlimited.first[n], 1e-12 * std::abs(unlimited.first[n])) << "step " << n;
+  EXPECT_GT(limited.second, 1.5 * unlimited.second);
+}
+
 // A step whose relaxation fails at its least increment stops (exit 3 through NumericalFailure), naming its
 // strain and the key that bounds the cuts.
 TEST(QuasiStatic, AStepThatCannotBeCutFurtherStopsNamingItsStrainAndTheKey) {

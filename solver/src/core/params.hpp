@@ -136,6 +136,7 @@ struct Params {
   std::int64_t relaxation_max_iterations = 0;  // quasi_static: the cap of one relaxation
   double min_increment_fraction = 1;    // quasi_static: the least increment / dt (1: every increment is dt)
   double snap_loss_share = 0;           // quasi_static, adaptive: the relaxation loss / loads' work that cuts
+  double increment_move_over_spacing = 0;  // quasi_static, adaptive: a relaxation's largest move / mean l0 that cuts (0: off)
 
   // output
   std::int64_t record_every = 0;        // steps between time-series records

@@ -23,11 +23,15 @@ namespace cellsim {
 namespace {
 
 // The springs' stiffness in the preconditioner gets kStiffnessShift_N_m on its diagonal (the free motions
-// between frictionless plates). No particle moves more than kMaxMoveOverRestLength of the mean rest length in
-// one Newton step (newton_solver.hpp).
+// between frictionless plates).
 constexpr double kStiffnessShift_N_m = 1e-2;
-constexpr double kMaxMoveOverRestLength = 0.25;
 constexpr double kLeastPressureLoad_Pa = 1e3;  // the load scale of a cell without turgor
+
+double mean_rest_length_m(const Simulation& sim) {
+  double sum_m = 0;
+  for (double l0 : sim.mesh().rest_length_m) sum_m += l0;
+  return sum_m / static_cast<double>(sim.mesh().rest_length_m.size());
+}
 
 // The load scale: max(P_T0, the largest |P| of a cell).
 double load_pressure_Pa(const Simulation& sim) {
@@ -186,17 +190,14 @@ class WallRelaxation final : public NewtonProblem {
 
 }  // namespace
 
-// Newton's method (newton_solver.hpp) on the relaxation above, no particle moving more than a quarter of a
-// bond's mean rest length in one step. The loss is the fall of the potential from start to end, less what
+// Newton's method (newton_solver.hpp) on the relaxation above, no particle moving more than
+// max_move_over_rest_length of a bond's mean rest length in one step. The loss is the fall of the potential from start to end, less what
 // the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J count that).
 Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance, std::int64_t max_iterations,
-                       const RotationHold* hold) {
+                       const RotationHold* hold, double max_move_over_rest_length) {
   State& s = sim.mutable_state();
   s.wall.v.setZero();
-  double mean_rest_length_m = 0;
-  for (double l0 : sim.mesh().rest_length_m) mean_rest_length_m += l0;
-  const double max_move_m =
-      kMaxMoveOverRestLength * mean_rest_length_m / static_cast<double>(sim.mesh().rest_length_m.size());
+  const double max_move_m = max_move_over_rest_length * mean_rest_length_m(sim);
   WallRelaxation relaxation(sim, increments, hold);
   const NewtonResult result = minimise(relaxation, s.wall.x, {tolerance, max_iterations, max_move_m});
   relaxation.leave_at(result.end.x);
@@ -217,7 +218,11 @@ constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
 constexpr int kMaxPeriodMoves = 40;
 // Adaptive increments (time.min_increment_fraction < 1): a cut keeps a quarter of the increment, as Abaqus'
 // automatic increments do; an easy one doubles the next; a rest below kLeastRest of dt joins the increment.
-constexpr double kCutTo = 0.25, kGrowBy = 2.0, kLeastRest = 1e-9;
+// An increment at the least length is relaxed with Newton steps of at most kSnapMoveOverRestLength of the
+// mean rest length: a snap there then descends close to the wall's path of steepest descent, and lands on
+// the branch that path reaches, not on one a long step jumps to (the branch after a fold would otherwise
+// depend on where the plate's step put its start).
+constexpr double kCutTo = 0.25, kGrowBy = 2.0, kLeastRest = 1e-9, kSnapMoveOverRestLength = 0.02;
 
 // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period
 // too: staggered, the wall relaxed at a fixed period, then the period strained (the cells moving with it
@@ -227,10 +232,11 @@ constexpr double kCutTo = 0.25, kGrowBy = 2.0, kLeastRest = 1e-9;
 // is the relaxation's (its loss counts the fall over every relaxation and move).
 }  // namespace
 
-Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int64_t max_iterations) {
+Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int64_t max_iterations,
+                                                      double max_move_over_rest_length) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();
-  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold);
+  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold, max_move_over_rest_length);
   if (!eq.converged || !sim.period_follows()) return eq;
   const State& s = sim.state();
   const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
@@ -252,7 +258,8 @@ Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int6
     sim.strain_period(by);
     sim.refresh_rates();
     potential_now(sim, increments_, after_J, dissipated_after_J);
-    const Equilibrium next = relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold);
+    const Equilibrium next =
+        relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold, max_move_over_rest_length);
     eq.iterations += next.iterations;
     eq.residual = next.residual;
     eq.converged = next.converged;
@@ -287,7 +294,7 @@ void QuasiStaticScheme::start_compression() {
 // trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
 // stored energy: the rates of the last evaluation are the start's); the relaxation's loss closes the account
 // from the stored energy's jump over the move.
-QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s) {
+QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double max_move_over_rest_length) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();
   const Params& p = sim.params();
@@ -307,8 +314,10 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s) {
                                       stored_before[kPlasticLoss] - stored_before[kLamellaLoss];
 
   increments_.begin_increment(s, sim.fluid_context(), h_s);
+  const Eigen::Matrix3Xd moved_x = s.wall.x;
   Increment done;
-  done.eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations);
+  done.eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations, max_move_over_rest_length);
+  done.largest_move_m = (s.wall.x - moved_x).colwise().norm().maxCoeff();
   const EnergyValues& power_at_end_W = sim.power_W();
   for (EnergyTermId load : {kPlateWork, kDrive}) {
     const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * h_s;
@@ -325,33 +334,41 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s) {
 }
 
 // A step of time.dt_ns in increments: one, unless time.min_increment_fraction < 1 lets the scheme cut an
-// increment to kCutTo of itself where its relaxation fails or releases more than time.snap_loss_share of
-// the loads' work over it (a snap), and grow it kGrowBy after an easy one (a quarter of that share at most),
-// back up to dt. The state is recorded once a step, at the strain the case asked for.
+// increment to kCutTo of itself where its relaxation fails, releases more than time.snap_loss_share of
+// the loads' work over it (a snap; and more than the energy a relaxation resolves, snap_floor_J: at rest the
+// loads do no work), or moves a wall particle farther than time.increment_move_over_spacing of a bond (a
+// jump to another branch that releases little); and grow it kGrowBy after an easy one (a quarter of that
+// share at most, half that move), back up to dt. The state is recorded once a step, at the asked strain.
 void QuasiStaticScheme::step() {
   const Params& p = sim_.params();
   const bool adaptive = p.min_increment_fraction < 1;
   const double least_s = p.min_increment_fraction * p.dt_s;
+  // The energy one relaxation resolves: its tolerance's force on a particle over a bond's rest length.
+  const double snap_floor_J = p.equilibrium_tolerance * pressure_load_N(sim_) * mean_rest_length_m(sim_);
+  const double move_limit_m = p.increment_move_over_spacing * mean_rest_length_m(sim_);  // 0: no limit
   double left_s = p.dt_s;
   std::int64_t evaluations = 0;
   while (left_s > 0) {
     double h_s = std::min(increment_s_, left_s);
     if (left_s - h_s < kLeastRest * p.dt_s) h_s = left_s;  // no sliver of round-off left over
+    const bool at_least = adaptive && h_s <= least_s * (1 + kLeastRest);
     std::optional<State> before;
     if (adaptive) before = sim_.state();
-    const Increment done = advance_by(h_s);
+    const Increment done = advance_by(h_s, at_least ? kSnapMoveOverRestLength : kMaxMoveOverRestLength);
     evaluations += done.eq.iterations;
     const bool failed = !done.eq.converged;
-    const bool snapped = done.loss_J > p.snap_loss_share * std::abs(done.loads_J);
-    if (adaptive && (failed || snapped) && h_s > least_s * (1 + kLeastRest)) {
+    const bool snapped = done.loss_J > std::max(p.snap_loss_share * std::abs(done.loads_J), snap_floor_J);
+    const bool jumped = move_limit_m > 0 && done.largest_move_m > move_limit_m;
+    if (adaptive && (failed || snapped || jumped) && !at_least) {
       sim_.restore(*before);
       increment_s_ = std::max(kCutTo * h_s, least_s);
       continue;
     }
     if (failed) fail(done.eq, h_s);
     left_s -= h_s;
-    if (adaptive && done.loss_J <= 0.25 * p.snap_loss_share * std::abs(done.loads_J))
-      increment_s_ = std::min(kGrowBy * h_s, p.dt_s);
+    const bool easy = done.loss_J <= 0.25 * p.snap_loss_share * std::abs(done.loads_J) &&
+                      (move_limit_m == 0 || done.largest_move_m <= move_limit_m / kGrowBy);
+    if (adaptive && easy) increment_s_ = std::min(kGrowBy * h_s, p.dt_s);
   }
   sim_.mutable_state().relaxation_evaluations = static_cast<double>(evaluations);
   sim_.refresh_rates();  // the rates at the increment's masses

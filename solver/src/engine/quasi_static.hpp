@@ -42,10 +42,15 @@ struct Equilibrium {
   bool period_unbalanced = false;  // a periodic slab's period did not reach zero lateral stress
 };
 
+// No particle moves more than this share of the wall's mean bond rest length in one Newton step of a
+// relaxation (newton_solver.hpp), unless the caller asks for less.
+constexpr double kMaxMoveOverRestLength = 0.25;
+
 // Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations, in the
 // increment its fluid's quasi-static face has begun; a held cell's on its hold (null: none).
 Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance,
-                       std::int64_t max_iterations, const RotationHold* hold = nullptr);
+                       std::int64_t max_iterations, const RotationHold* hold = nullptr,
+                       double max_move_over_rest_length = kMaxMoveOverRestLength);
 
 // The scheme: its steps; from the compression's start its hold on a lone cell's rotation
 // (compression.cell_rotation = held); a periodic slab's lateral modulus, the secant of its period's last
@@ -64,11 +69,12 @@ class QuasiStaticScheme final : public Scheme {
   struct Increment {
     Equilibrium eq;
     double loss_J = 0, loads_J = 0;  // the relaxation's loss, the loads' work over the increment
+    double largest_move_m = 0;       // the farthest a wall particle moved in the relaxation (from the loads' move on)
   };
-  Increment advance_by(double h_s);
+  Increment advance_by(double h_s, double max_move_over_rest_length);
   [[noreturn]] void fail(const Equilibrium& eq, double h_s) const;
   // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period too.
-  Equilibrium relax_wall_and_period(double tolerance, std::int64_t max_iterations);
+  Equilibrium relax_wall_and_period(double tolerance, std::int64_t max_iterations, double max_move_over_rest_length);
 
   Simulation& sim_;
   IncrementFluid& increments_;

@@ -289,6 +289,11 @@ std::vector<ParamSpec> build_specs() {
            "quasi_static, adaptive increments: an increment whose relaxation releases more than this share of "
            "the loads' work over it (a snap) is cut",
            "engine/quasi_static.hpp"),
+      real("time.increment_move_over_spacing", "1", 1.0, &P::increment_move_over_spacing, 0, 0, true, 10, true,
+           "quasi_static, adaptive increments: an increment whose relaxation moves a wall particle farther than "
+           "this share of the wall's mean bond rest length is cut (a jump to another branch that releases little "
+           "energy), and one grows only while its largest move is within half of it; 0: not used",
+           "engine/quasi_static.hpp"),
       // output
       integer("output.record_every", &P::record_every, 100, 1, 1e9,
               "steps between time-series records", "model.md §8"),
@@ -359,7 +364,8 @@ const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
         "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"}},
       {"fluid.model", "cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
       {"time.scheme", "quasi_static",
-       {"compression.cell_rotation", "time.min_increment_fraction", "time.snap_loss_share"}},
+       {"compression.cell_rotation", "time.min_increment_fraction", "time.snap_loss_share",
+        "time.increment_move_over_spacing"}},
       {"time.scheme", "dynamic", {"tissue.period_viscosity_Pa_s"}},
   };
   return keys;
