@@ -248,14 +248,14 @@ TEST(QuasiStatic, AYieldingWallKeepsOnlyTheHistoryOfItsAcceptedPoints) {
   EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]);
 }
 
-// Adaptive increments (time.min_increment_fraction < 1), cutting at every loss above 1e-9 of the loads'
+// Adaptive increments (time.min_increment_ns below time.dt_ns), cutting at every loss above 1e-9 of the loads'
 // work: each step still ends on the plate position it asks for (the records stay on the asked strains, to
 // round-off of the increments' sum), the account closes as the fixed steps' does, and the cut increments cost
 // more relaxations than the fixed ones.
 TEST(QuasiStatic, AdaptiveIncrementsKeepTheStepsPlatesAndTheAccount) {
   const auto compressed = [](double least_fraction) {
     auto b = std::make_unique<Built>(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400},
-                                                            {"min_increment_fraction", least_fraction},
+                                                            {"min_increment_ns", 400 * least_fraction},
                                                             {"snap_loss_share", 1e-9}}}}));
     settle(b->sim, 100000, 0);
     QuasiStaticScheme scheme(b->sim);
@@ -288,7 +288,7 @@ TEST(QuasiStatic, AdaptiveIncrementsKeepTheStepsPlatesAndTheAccount) {
 TEST(QuasiStatic, AdaptiveIncrementsDoNotCutAStepWhereTheLoadsDoNoWork) {
   const auto dried = [](double least_fraction) {
     Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 500}, {"snap_loss_share", 1e3},
-                                   {"min_increment_fraction", least_fraction}}},
+                                   {"min_increment_ns", 500 * least_fraction}}},
                          {"drying", {{"dryness", 0.5}}}}));
     settle(b.sim, 100000, 0);
     QuasiStaticScheme scheme(b.sim);
@@ -309,7 +309,7 @@ TEST(QuasiStatic, AdaptiveIncrementsDoNotCutAStepWhereTheLoadsDoNoWork) {
 // the limit, the plates still where the steps ask, and the account closed.
 TEST(QuasiStatic, AnIncrementThatMovesTheWallFartherThanItsLimitIsCut) {
   const auto compressed = [](double move_over_spacing) {
-    Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_fraction", 1.0 / 64},
+    Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_ns", 400.0 / 64},
                                    {"snap_loss_share", 1e3}, {"increment_move_over_spacing", move_over_spacing}}}}));
     settle(b.sim, 100000, 0);
     QuasiStaticScheme scheme(b.sim);
@@ -335,7 +335,7 @@ TEST(QuasiStatic, AnIncrementThatMovesTheWallFartherThanItsLimitIsCut) {
 // A step whose relaxation fails at its least increment stops (exit 3 through NumericalFailure), naming its
 // strain and the key that bounds the cuts.
 TEST(QuasiStatic, AStepThatCannotBeCutFurtherStopsNamingItsStrainAndTheKey) {
-  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_fraction", 0.25},
+  Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 400}, {"min_increment_ns", 100},
                                  {"relaxation_max_iterations", 2}}}}));
   settle(b.sim, 100000, 0);
   QuasiStaticScheme scheme(b.sim);
@@ -346,7 +346,7 @@ TEST(QuasiStatic, AStepThatCannotBeCutFurtherStopsNamingItsStrainAndTheKey) {
   } catch (const NumericalFailure& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("strain"), std::string::npos) << what;
-    EXPECT_NE(what.find("time.min_increment_fraction = 0.25"), std::string::npos) << what;
+    EXPECT_NE(what.find("time.min_increment_ns = 100"), std::string::npos) << what;
     EXPECT_NE(what.find("time.relaxation_max_iterations = 2"), std::string::npos) << what;
   }
 }

@@ -134,7 +134,7 @@ struct Params {
   Choice time_scheme = kDynamic;
   double equilibrium_tolerance = 0;     // quasi_static: largest wall force / its pressure load to stop at
   std::int64_t relaxation_max_iterations = 0;  // quasi_static: the cap of one relaxation
-  double min_increment_fraction = 1;    // quasi_static: the least increment / dt (1: every increment is dt)
+  std::optional<double> min_increment_s;  // quasi_static: the least increment (auto: dt, every step one increment)
   double snap_loss_share = 0;           // quasi_static, adaptive: the relaxation loss / loads' work that cuts
   double increment_move_over_spacing = 0;  // quasi_static, adaptive: a relaxation's largest move / mean l0 that cuts (0: off)
 

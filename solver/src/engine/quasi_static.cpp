@@ -216,7 +216,7 @@ namespace {
 // than kLargestPeriodMove a move, kMaxPeriodMoves moves a step.
 constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
 constexpr int kMaxPeriodMoves = 40;
-// Adaptive increments (time.min_increment_fraction < 1): a cut keeps a quarter of the increment, as Abaqus'
+// Adaptive increments (time.min_increment_ns below time.dt_ns): a cut keeps a quarter of the increment, as Abaqus'
 // automatic increments do; an easy one doubles the next; a rest below kLeastRest of dt joins the increment.
 // An increment at the least length is relaxed with Newton steps of at most kSnapMoveOverRestLength of the
 // mean rest length: a snap there then descends close to the wall's path of steepest descent, and lands on
@@ -333,7 +333,7 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
   return done;
 }
 
-// A step of time.dt_ns in increments: one, unless time.min_increment_fraction < 1 lets the scheme cut an
+// A step of time.dt_ns in increments: one, unless time.min_increment_ns below it lets the scheme cut an
 // increment to kCutTo of itself where its relaxation fails, releases more than time.snap_loss_share of
 // the loads' work over it (a snap; and more than the energy a relaxation resolves, snap_floor_J: at rest the
 // loads do no work), or moves a wall particle farther than time.increment_move_over_spacing of a bond (a
@@ -341,8 +341,8 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
 // share at most, half that move), back up to dt. The state is recorded once a step, at the asked strain.
 void QuasiStaticScheme::step() {
   const Params& p = sim_.params();
-  const bool adaptive = p.min_increment_fraction < 1;
-  const double least_s = p.min_increment_fraction * p.dt_s;
+  const double least_s = std::min(p.min_increment_s.value_or(p.dt_s), p.dt_s);
+  const bool adaptive = least_s < p.dt_s;
   // The energy one relaxation resolves: its tolerance's force on a particle over a bond's rest length.
   const double snap_floor_J = p.equilibrium_tolerance * pressure_load_N(sim_) * mean_rest_length_m(sim_);
   const double move_limit_m = p.increment_move_over_spacing * mean_rest_length_m(sim_);  // 0: no limit
@@ -382,8 +382,8 @@ void QuasiStaticScheme::fail(const Equilibrium& eq, double h_s) const {
   std::ostringstream msg;
   msg << "step " << s.step + 1 << " (t = " << s.time_s * 1e6 << " us, "
       << (s.stage == Stage::Drying ? "drying" : "compression, strain " + std::to_string(sim_.nominal_strain())) << ")";
-  if (h_s < p.dt_s) msg << ", in an increment of " << h_s / p.dt_s << " of time.dt_ns (time.min_increment_fraction = "
-                        << p.min_increment_fraction << ")";
+  if (h_s < p.dt_s) msg << ", in an increment of " << h_s * 1e9 << " ns (time.min_increment_ns = "
+                        << p.min_increment_s.value_or(p.dt_s) * 1e9 << ")";
   if (eq.period_unbalanced)
     msg << ": the periodic slab's period did not reach zero lateral stress within " << kMaxPeriodMoves
         << " moves (lateral stress " << s.lateral_stress_x_Pa / 1e3 << " / " << s.lateral_stress_y_Pa / 1e3

@@ -280,11 +280,12 @@ std::vector<ParamSpec> build_specs() {
               "a closed cell's relaxations (quasi_static steps, the volumetric modulus): the force evaluations one may "
               "take; beyond, the run stops (exit 3)",
               "engine/quasi_static.hpp"),
-      real("time.min_increment_fraction", "1", 1.0, &P::min_increment_fraction, 1, 0, false, 1, true,
-           "quasi_static: the shortest increment a step may be cut to, as a fraction of time.dt_ns (1: every "
-           "step one increment; below 1 a step's increment is cut to a quarter where its relaxation fails or "
-           "snaps, and doubles after easy ones, back to time.dt_ns; records stay once a step)",
-           "engine/quasi_static.hpp"),
+      derived("time.min_increment_ns", "ns", 1e-9, &P::min_increment_s, 0, false, 1000, true,
+              "quasi_static: the shortest increment a step may be cut to (below time.dt_ns a step's increment is "
+              "cut to a quarter where its relaxation fails, snaps or moves the wall too far, and doubles after easy "
+              "ones, back to time.dt_ns; records stay once a step). One value for every requested step gives the "
+              "path one resolution at its snaps: at 1 m/s, 1 ns is 1 nm of plate travel",
+              "engine/quasi_static.hpp, docs/model-closures.md", "time.dt_ns: every step one increment"),
       real("time.snap_loss_share", "1", 1.0, &P::snap_loss_share, 0.05, 0, false, 1e6, true,
            "quasi_static, adaptive increments: an increment whose relaxation releases more than this share of "
            "the loads' work over it (a snap) is cut",
@@ -364,7 +365,7 @@ const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
         "drying.pressure_closure_time_us", "compression.volume_closure_time_us", "time.density_update"}},
       {"fluid.model", "cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
       {"time.scheme", "quasi_static",
-       {"compression.cell_rotation", "time.min_increment_fraction", "time.snap_loss_share",
+       {"compression.cell_rotation", "time.min_increment_ns", "time.snap_loss_share",
         "time.increment_move_over_spacing"}},
       {"time.scheme", "dynamic", {"tissue.period_viscosity_Pa_s"}},
   };
