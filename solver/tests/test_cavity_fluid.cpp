@@ -288,6 +288,7 @@ TEST(QuasiStatic, AdaptiveIncrementsKeepTheStepsPlatesAndTheAccount) {
 TEST(QuasiStatic, AdaptiveIncrementsDoNotCutAStepWhereTheLoadsDoNoWork) {
   const auto dried = [](double least_fraction) {
     Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 500}, {"snap_loss_share", 1e3},
+                                   {"increment_move_over_spacing", 0},
                                    {"min_increment_ns", 500 * least_fraction}}},
                          {"drying", {{"dryness", 0.5}}}}));
     settle(b.sim, 100000, 0);

@@ -290,7 +290,7 @@ std::vector<ParamSpec> build_specs() {
            "quasi_static, adaptive increments: an increment whose relaxation releases more than this share of "
            "the loads' work over it (a snap) is cut",
            "engine/quasi_static.hpp"),
-      real("time.increment_move_over_spacing", "1", 1.0, &P::increment_move_over_spacing, 0, 0, true, 10, true,
+      real("time.increment_move_over_spacing", "1", 1.0, &P::increment_move_over_spacing, 0.05, 0, true, 10, true,
            "quasi_static, adaptive increments: an increment whose relaxation moves a wall particle farther than "
            "this share of the wall's mean bond rest length is cut (a jump to another branch that releases little "
            "energy), and one grows only while its largest move is within half of it; 0: not used",
