@@ -191,8 +191,8 @@ class WallRelaxation final : public NewtonProblem {
 }  // namespace
 
 // Newton's method (newton_solver.hpp) on the relaxation above, no particle moving more than
-// max_move_over_rest_length of a bond's mean rest length in one step. The loss is the fall of the potential from start to end, less what
-// the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J count that).
+// max_move_over_rest_length of a bond's mean rest length in one step. The loss is the fall of the potential
+// from start to end, less what the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J).
 Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance, std::int64_t max_iterations,
                        const RotationHold* hold, double max_move_over_rest_length) {
   State& s = sim.mutable_state();
@@ -216,8 +216,8 @@ namespace {
 // than kLargestPeriodMove a move, kMaxPeriodMoves moves a step.
 constexpr double kFirstLateralModulus = 10, kLargestPeriodMove = 1e-2;
 constexpr int kMaxPeriodMoves = 40;
-// Adaptive increments (time.min_increment_ns below time.dt_ns): a cut keeps a quarter of the increment, as Abaqus'
-// automatic increments do; an easy one doubles the next; a rest below kLeastRest of dt joins the increment.
+// Adaptive increments (time.min_increment_ns below time.dt_ns): a cut keeps a quarter of the increment, as
+// Abaqus' automatic increments do; an easy one doubles the next; a rest below kLeastRest of dt joins the increment.
 // An increment at the least length is relaxed with Newton steps of at most kSnapMoveOverRestLength of the
 // mean rest length: a snap there then descends close to the wall's path of steepest descent, and lands on
 // the branch that path reaches, not on one a long step jumps to (the branch after a fold would otherwise
