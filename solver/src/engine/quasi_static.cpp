@@ -282,7 +282,8 @@ IncrementFluid& increments_of(Simulation& sim) {
 }
 
 QuasiStaticScheme::QuasiStaticScheme(Simulation& sim)
-    : sim_(sim), increments_(increments_of(sim)), increment_s_(sim.params().dt_s) {}
+    : sim_(sim), increments_(increments_of(sim)), increment_s_(sim.params().dt_s),
+      bond_m_(mean_rest_length_m(sim)) {}
 
 void QuasiStaticScheme::start_compression() {
   sim_.start_compression();
@@ -344,8 +345,8 @@ void QuasiStaticScheme::step() {
   const double least_s = std::min(p.min_increment_s.value_or(p.dt_s), p.dt_s);
   const bool adaptive = least_s < p.dt_s;
   // The energy one relaxation resolves: its tolerance's force on a particle over a bond's rest length.
-  const double snap_floor_J = p.equilibrium_tolerance * pressure_load_N(sim_) * mean_rest_length_m(sim_);
-  const double move_limit_m = p.increment_move_over_spacing * mean_rest_length_m(sim_);  // 0: no limit
+  const double snap_floor_J = p.equilibrium_tolerance * pressure_load_N(sim_) * bond_m_;
+  const double move_limit_m = p.increment_move_over_spacing * bond_m_;  // 0: no limit
   double left_s = p.dt_s;
   std::int64_t evaluations = 0;
   while (left_s > 0) {

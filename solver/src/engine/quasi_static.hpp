@@ -81,6 +81,7 @@ class QuasiStaticScheme final : public Scheme {
   std::optional<RotationHold> rotation_hold_;
   std::optional<Eigen::Vector2d> period_modulus_;  // Pa per unit strain, per axis
   double increment_s_;                             // the next increment's length (adaptive increments)
+  double bond_m_;                                  // the wall's mean bond rest length (the mesh's, fixed)
 };
 
 }  // namespace cellsim
