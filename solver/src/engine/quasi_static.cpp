@@ -282,8 +282,12 @@ IncrementFluid& increments_of(Simulation& sim) {
 }
 
 QuasiStaticScheme::QuasiStaticScheme(Simulation& sim)
-    : sim_(sim), increments_(increments_of(sim)), increment_s_(sim.params().dt_s),
-      bond_m_(mean_rest_length_m(sim)) {}
+    : sim_(sim),
+      increments_(increments_of(sim)),
+      increment_s_(sim.params().dt_s),
+      least_s_(std::min(sim.params().min_increment_s.value_or(sim.params().dt_s), sim.params().dt_s)),
+      bond_m_(mean_rest_length_m(sim)),
+      move_limit_m_(least_s_ < sim.params().dt_s ? sim.params().increment_move_over_spacing * bond_m_ : 0) {}
 
 void QuasiStaticScheme::start_compression() {
   sim_.start_compression();
@@ -315,10 +319,11 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
                                       stored_before[kPlasticLoss] - stored_before[kLamellaLoss];
 
   increments_.begin_increment(s, sim.fluid_context(), h_s);
-  const Eigen::Matrix3Xd moved_x = s.wall.x;
+  std::optional<Eigen::Matrix3Xd> moved_x;  // kept only where the move limit reads the relaxation's move
+  if (move_limit_m_ > 0) moved_x = s.wall.x;
   Increment done;
   done.eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations, max_move_over_rest_length);
-  done.largest_move_m = (s.wall.x - moved_x).colwise().norm().maxCoeff();
+  if (moved_x) done.largest_move_m = (s.wall.x - *moved_x).colwise().norm().maxCoeff();
   const EnergyValues& power_at_end_W = sim.power_W();
   for (EnergyTermId load : {kPlateWork, kDrive}) {
     const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * h_s;
@@ -342,11 +347,10 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
 // share at most, half that move), back up to dt. The state is recorded once a step, at the asked strain.
 void QuasiStaticScheme::step() {
   const Params& p = sim_.params();
-  const double least_s = std::min(p.min_increment_s.value_or(p.dt_s), p.dt_s);
+  const double least_s = least_s_, move_limit_m = move_limit_m_;
   const bool adaptive = least_s < p.dt_s;
   // The energy one relaxation resolves: its tolerance's force on a particle over a bond's rest length.
   const double snap_floor_J = p.equilibrium_tolerance * pressure_load_N(sim_) * bond_m_;
-  const double move_limit_m = p.increment_move_over_spacing * bond_m_;  // 0: no limit
   double left_s = p.dt_s;
   std::int64_t evaluations = 0;
   while (left_s > 0) {

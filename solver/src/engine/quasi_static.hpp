@@ -69,7 +69,8 @@ class QuasiStaticScheme final : public Scheme {
   struct Increment {
     Equilibrium eq;
     double loss_J = 0, loads_J = 0;  // the relaxation's loss, the loads' work over the increment
-    double largest_move_m = 0;       // the farthest a wall particle moved in the relaxation (from the loads' move on)
+    double largest_move_m = 0;       // the farthest a wall particle moved in the relaxation (from the loads' move
+                                     // on; measured only where move_limit_m_ > 0)
   };
   Increment advance_by(double h_s, double max_move_over_rest_length);
   [[noreturn]] void fail(const Equilibrium& eq, double h_s) const;
@@ -81,7 +82,9 @@ class QuasiStaticScheme final : public Scheme {
   std::optional<RotationHold> rotation_hold_;
   std::optional<Eigen::Vector2d> period_modulus_;  // Pa per unit strain, per axis
   double increment_s_;                             // the next increment's length (adaptive increments)
+  double least_s_;                                 // the least increment (dt: one increment a step)
   double bond_m_;                                  // the wall's mean bond rest length (the mesh's, fixed)
+  double move_limit_m_;                            // an increment's largest move before a cut (0: none)
 };
 
 }  // namespace cellsim
