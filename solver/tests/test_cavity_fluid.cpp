@@ -333,6 +333,52 @@ TEST(QuasiStatic, AnIncrementThatMovesTheWallFartherThanItsLimitIsCut) {
   EXPECT_GT(limited.second, 1.5 * unlimited.second);
 }
 
+// time.predictor = secant: each relaxation starts from the last equilibrium moved by the last increment's
+// motion where that starts nearer equilibrium. On the small cell's smooth path (20 fixed steps of 0.2 um;
+// at the 21st the plain start dips onto a dimpled equilibrium for one step, where the secant keeps on) it
+// reaches the same equilibria, each within its tolerance (the plate forces within the two relaxations'
+// residual budgets, 2 x tolerance x max(P_T0, |P|) x the wall's area; the relaxations' loss, the
+// trapezoid's error here, the same), in fewer force evaluations; the account closes.
+TEST(QuasiStatic, TheSecantPredictorReachesTheSameEquilibriaInFewerEvaluations) {
+  struct Path {
+    std::vector<double> force_N;
+    double evaluations = 0, load_N = 0;  // load: the largest max(P_T0, |P|) x the wall's area
+    double tolerance = 0;
+    double released_J = 0, work_J = 0;  // the relaxations' loss and the plate's work in compression
+  };
+  const auto compressed = [](const char* predictor) {
+    Built b(cavity_case({{"time", {{"scheme", "quasi_static"}, {"dt_ns", 200}, {"predictor", predictor}}}}));
+    settle(b.sim, 100000, 0);
+    QuasiStaticScheme scheme(b.sim);
+    scheme.start_compression();
+    const Record start = b.sim.record();
+    Path path;
+    path.tolerance = b.p.equilibrium_tolerance;
+    for (int n = 0; n < 20; ++n) {
+      scheme.step();
+      const Record r = b.sim.record();
+      path.force_N.push_back(r.plate_force_top_N);
+      path.evaluations += r.relaxation_evaluations;
+      path.load_N = std::max(path.load_N, std::max(b.p.turgor_Pa, std::abs(r.mean_pressure_Pa)) * r.area_m2);
+    }
+    const Record r = b.sim.record();
+    EXPECT_LT(std::abs(r.energy_residual_J), 1e-9 * r.energy[kPlateWork]) << predictor;
+    path.released_J = r.energy[kRelaxationLoss] - start.energy[kRelaxationLoss];
+    path.work_J = r.energy[kPlateWork] - start.energy[kPlateWork];
+    return path;
+  };
+  const Path plain = compressed("none"), secant = compressed("secant");
+  const double bound_N = 2 * plain.tolerance * plain.load_N;
+  ASSERT_EQ(secant.force_N.size(), plain.force_N.size());
+  for (std::size_t n = 0; n < plain.force_N.size(); ++n)
+    EXPECT_NEAR(secant.force_N[n], plain.force_N[n], bound_N) << "step " << n;
+  EXPECT_GT(plain.force_N.back(), 10 * bound_N);  // the bound is tight against the forces compared
+  EXPECT_NEAR(secant.released_J, plain.released_J, 1e-4 * plain.work_J);  // the same equilibria, the same account
+  EXPECT_LT(secant.evaluations, 0.9 * plain.evaluations);
+  std::printf("evaluations: plain %.0f, secant %.0f; plate force %.3g N, bound %.3g N\n", plain.evaluations,
+              secant.evaluations, plain.force_N.back(), bound_N);
+}
+
 // A step whose relaxation fails at its least increment stops (exit 3 through NumericalFailure), naming its
 // strain and the key that bounds the cuts.
 TEST(QuasiStatic, AStepThatCannotBeCutFurtherStopsNamingItsStrainAndTheKey) {

@@ -39,6 +39,8 @@ enum LateralInCompression : Choice { kLateralConfined = 0, kLateralUnconfined = 
 // zero (held) or left to the frictionless plates (free); auto resolves to held for a lone cell in the
 // quasi-static scheme and to free otherwise.
 enum CellRotation : Choice { kRotationAuto = 0, kRotationHeld = 1, kRotationFree = 2 };
+// time.predictor (quasi-static): where an increment's relaxation starts.
+enum IncrementPredictor : Choice { kPredictorNone = 0, kPredictorSecant = 1 };
 
 struct Params {
   // cell geometry and particles (model.md §1)
@@ -136,6 +138,7 @@ struct Params {
   std::int64_t relaxation_max_iterations = 0;  // quasi_static: the cap of one relaxation
   std::optional<double> min_increment_s;  // quasi_static: the least increment (auto: dt, every step one increment)
   double snap_loss_share = 0;           // quasi_static, adaptive: the relaxation loss / loads' work that cuts
+  Choice increment_predictor = kPredictorNone;  // time.predictor (quasi_static)
   double increment_move_over_spacing = 0;  // quasi_static, adaptive: a relaxation's largest move / mean l0 that cuts (0: off)
 
   // output

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "engine/increment_predictor.hpp"
 #include "engine/newton_preconditioner.hpp"
 #include "engine/newton_solver.hpp"
 #include "engine/rotation_hold.hpp"
@@ -136,21 +137,12 @@ void factor_at(Simulation& sim, const IncrementFluid& increments, const Eigen::M
                            increments.volume_stiffness_Pa_m3(sim.eos()), cells_joined(sim));
 }
 
-// The plates' predictor: a plate that moves at fixed particles would thrust the particles it touches k_pw
-// (its travel) into its springs, hundreds of times the load they carry, and a relaxation from there may
-// settle on another branch (a soft wall dimples under the thrust). So each particle keeps the overlap it had
-// with each plate before the move (a particle the plate reaches anew sits at the edge of its range): the
-// touching wall moves with the plate, as it will at equilibrium.
-void move_touching_particles_with_plates(Simulation& sim, const Plates& before) {
-  Eigen::Matrix3Xd& x = sim.mutable_state().wall.x;
-  const Plates& after = sim.state().plates;
-  if (!after.active) return;
-  for (Eigen::Index k = 0; k < x.cols(); ++k) {
-    const PlateOverlap was = before.active ? plate_overlap(x.col(k), sim.plate_law(), before) : PlateOverlap{};
-    const PlateOverlap now = plate_overlap(x.col(k), sim.plate_law(), after);
-    if (now.top_m > was.top_m) x(2, k) -= now.top_m - was.top_m;
-    if (now.bottom_m > was.bottom_m) x(2, k) += now.bottom_m - was.bottom_m;
-  }
+// The largest force on a wall particle over its pressure load, at the state's positions and rates now (on
+// the hold where one holds the cell).
+double force_over_load(const Simulation& sim, const RotationHold* hold) {
+  Eigen::Matrix3Xd force = sim.wall_force();
+  if (hold) hold->project(force);
+  return std::sqrt(force.colwise().squaredNorm().maxCoeff()) / pressure_load_N(sim);
 }
 
 // The relaxation as a problem of newton_solver.hpp: a point is the wall at x, its force the wall's forces
@@ -287,15 +279,38 @@ QuasiStaticScheme::QuasiStaticScheme(Simulation& sim)
       increment_s_(sim.params().dt_s),
       least_s_(std::min(sim.params().min_increment_s.value_or(sim.params().dt_s), sim.params().dt_s)),
       bond_m_(mean_rest_length_m(sim)),
-      move_limit_m_(least_s_ < sim.params().dt_s ? sim.params().increment_move_over_spacing * bond_m_ : 0) {}
+      move_limit_m_(least_s_ < sim.params().dt_s ? sim.params().increment_move_over_spacing * bond_m_ : 0),
+      secant_(sim.params().increment_predictor == kPredictorSecant) {}
 
 void QuasiStaticScheme::start_compression() {
   sim_.start_compression();
+  last_motion_s_ = 0;  // the drying's motion does not predict the plates'
   if (sim_.params().cell_rotation == kRotationHeld) rotation_hold_.emplace(sim_.state().wall.x);
 }
 
-// One increment of h_s: the loads move (the plates, the drying ramp), the wall touching a plate with it (the
-// predictor above), Eq 11 is integrated over it and the wall relaxed. The loads' work over it is the
+// The secant predictor (time.predictor = secant): the relaxation starts from the last equilibrium moved by
+// the last increment's motion, scaled to h_s (each particle keeping its plate overlap, on the hold), where
+// the largest force there is below the plain start's; otherwise from the plain start, as before. It is part
+// of the loads' move: the stored energy's jump and the relaxation's loss are counted from where it starts.
+void QuasiStaticScheme::start_at_secant(double h_s, const Eigen::Matrix3Xd& last_x, const Plates& plates_before) {
+  Simulation& sim = sim_;
+  State& s = sim.mutable_state();
+  const RotationHold* hold = rotation_hold();
+  const WallHistory history = WallHistory::of(s);  // the secant's evaluation may write the wall's history
+  const double plain = force_over_load(sim, hold);
+  Eigen::Matrix3Xd plain_x = s.wall.x;
+  s.wall.x = last_x + (h_s / last_motion_s_) * last_motion_m_;
+  keep_plate_overlaps(s.wall.x, last_x, sim.plate_law(), plates_before, s.plates);
+  if (hold) hold->project(s.wall.x);
+  sim.refresh_rates();
+  if (force_over_load(sim, hold) < plain) return;
+  s.wall.x = std::move(plain_x);
+  history.restore(s);
+  sim.refresh_rates();
+}
+
+// One increment of h_s: the loads move (the plates, the drying ramp), the wall touching a plate with it
+// (increment_predictor.hpp) and, with the secant predictor, the wall by its last motion, Eq 11 is integrated over it and the wall relaxed. The loads' work over it is the
 // trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
 // stored energy: the rates of the last evaluation are the start's); the relaxation's loss closes the account
 // from the stored energy's jump over the move.
@@ -307,10 +322,13 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
   const EnergyValues power_at_start_W = sim.power_W();
   const EnergyValues stored_before = sim.energy_terms_now();
   const Plates plates_before = s.plates;
+  std::optional<Eigen::Matrix3Xd> last_x;  // the last equilibrium, kept where the secant predictor reads it
+  if (secant_) last_x = s.wall.x;
   sim.advance_loads(h_s);
-  move_touching_particles_with_plates(sim, plates_before);
+  keep_plate_overlaps(s.wall.x, s.wall.x, sim.plate_law(), plates_before, s.plates);
   if (hold) hold->project(s.wall.x);  // back onto C = 0: the least move
   sim.refresh_rates();  // the surface at the particles now (a periodic slab's period moved them)
+  if (last_x && last_motion_s_ > 0) start_at_secant(h_s, *last_x, plates_before);
   const EnergyValues stored_at_start = sim.energy_terms_now();
   const double jump_J = stored_energy_J(stored_at_start) - stored_energy_J(stored_before);
   // The move may already have made the wall's history dissipate (a slider yielding): the history counts
@@ -324,6 +342,7 @@ QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double ma
   Increment done;
   done.eq = relax_wall_and_period(p.equilibrium_tolerance, p.relaxation_max_iterations, max_move_over_rest_length);
   if (moved_x) done.largest_move_m = (s.wall.x - *moved_x).colwise().norm().maxCoeff();
+  if (last_x) done.motion_m = s.wall.x - *last_x;
   const EnergyValues& power_at_end_W = sim.power_W();
   for (EnergyTermId load : {kPlateWork, kDrive}) {
     const double work_J = 0.5 * (power_at_start_W[load] + power_at_end_W[load]) * h_s;
@@ -359,7 +378,7 @@ void QuasiStaticScheme::step() {
     const bool at_least = adaptive && h_s <= least_s * (1 + kLeastRest);
     std::optional<State> before;
     if (adaptive) before = sim_.state();
-    const Increment done = advance_by(h_s, at_least ? kSnapMoveOverRestLength : kMaxMoveOverRestLength);
+    Increment done = advance_by(h_s, at_least ? kSnapMoveOverRestLength : kMaxMoveOverRestLength);
     evaluations += done.eq.iterations;
     const bool failed = !done.eq.converged;
     const bool snapped = done.loss_J > std::max(p.snap_loss_share * std::abs(done.loads_J), snap_floor_J);
@@ -371,6 +390,10 @@ void QuasiStaticScheme::step() {
     }
     if (failed) fail(done.eq, h_s);
     left_s -= h_s;
+    if (secant_) {
+      last_motion_m_ = secant_motion(done.motion_m);
+      last_motion_s_ = h_s;
+    }
     const bool easy = done.loss_J <= 0.25 * p.snap_loss_share * std::abs(done.loads_J) &&
                       (move_limit_m == 0 || done.largest_move_m <= move_limit_m / kGrowBy);
     if (adaptive && easy) increment_s_ = std::min(kGrowBy * h_s, p.dt_s);

@@ -14,7 +14,8 @@
 //
 // A step moves the loads with the wall that touches a plate keeping its overlap (a plate pushed at fixed
 // particles would thrust them k_pw x its travel into its springs, and a soft wall relaxed from there
-// dimples onto another branch). The energy account: the loads' work is the trapezoid of their powers at
+// dimples onto another branch); with time.predictor = secant the wall also moves by the last increment's
+// motion, scaled, where that starts nearer equilibrium (increment_predictor.hpp). The energy account: the loads' work is the trapezoid of their powers at
 // the two equilibria (plate work: its force x its speed; drive: the ramp of P_T and L_ref), Eq 11's water
 // a jump per step (cavity_fluid.hpp), and the relaxation's loss the rest: what the wall released in snaps
 // as it folded, and the trapezoid's error, which shrinks as dt^2.
@@ -28,6 +29,7 @@
 
 #include "engine/fluid_model.hpp"
 #include "engine/rotation_hold.hpp"
+#include "core/state.hpp"
 #include "engine/scheme.hpp"
 
 namespace cellsim {
@@ -71,8 +73,10 @@ class QuasiStaticScheme final : public Scheme {
     double loss_J = 0, loads_J = 0;  // the relaxation's loss, the loads' work over the increment
     double largest_move_m = 0;       // the farthest a wall particle moved in the relaxation (from the loads' move
                                      // on; measured only where move_limit_m_ > 0)
+    Eigen::Matrix3Xd motion_m;       // the wall's motion over the increment (kept for the secant predictor)
   };
   Increment advance_by(double h_s, double max_move_over_rest_length);
+  void start_at_secant(double h_s, const Eigen::Matrix3Xd& last_x, const Plates& plates_before);
   [[noreturn]] void fail(const Equilibrium& eq, double h_s) const;
   // The wall relaxed, and where a periodic slab's period follows (Simulation::period_follows), the period too.
   Equilibrium relax_wall_and_period(double tolerance, std::int64_t max_iterations, double max_move_over_rest_length);
@@ -85,6 +89,9 @@ class QuasiStaticScheme final : public Scheme {
   double least_s_;                                 // the least increment (dt: one increment a step)
   double bond_m_;                                  // the wall's mean bond rest length (the mesh's, fixed)
   double move_limit_m_;                            // an increment's largest move before a cut (0: none)
+  bool secant_;                                    // time.predictor = secant
+  Eigen::Matrix3Xd last_motion_m_;                 // the last accepted increment's motion of the wall
+  double last_motion_s_ = 0;                       // and its length (0: none yet in this stage)
 };
 
 }  // namespace cellsim

@@ -290,6 +290,11 @@ std::vector<ParamSpec> build_specs() {
            "quasi_static, adaptive increments: an increment whose relaxation releases more than this share of "
            "the loads' work over it (a snap) is cut",
            "engine/quasi_static.hpp"),
+      choice("time.predictor", &P::increment_predictor, {"none", "secant"},
+             "quasi_static: where an increment's relaxation starts. none: the last equilibrium with the wall that "
+             "touches a plate moved with it; secant: the last increment's motion added, scaled to this increment, "
+             "where that starts with a smaller largest force (and dropped where it does not)",
+             "engine/quasi_static.hpp, docs/model-closures.md"),
       real("time.increment_move_over_spacing", "1", 1.0, &P::increment_move_over_spacing, 0.05, 0, true, 10, true,
            "quasi_static, adaptive increments: an increment whose relaxation moves a wall particle farther than "
            "this share of the wall's mean bond rest length is cut (a jump to another branch that releases little "
@@ -366,7 +371,7 @@ const std::vector<KeysReadOnlyBy>& keys_read_only_by() {
       {"fluid.model", "cavity", {"time.equilibrium_tolerance", "time.relaxation_max_iterations"}},
       {"time.scheme", "quasi_static",
        {"compression.cell_rotation", "time.min_increment_ns", "time.snap_loss_share",
-        "time.increment_move_over_spacing"}},
+        "time.increment_move_over_spacing", "time.predictor"}},
       {"time.scheme", "dynamic", {"tissue.period_viscosity_Pa_s"}},
   };
   return keys;
