@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -21,6 +22,18 @@
 #include "physics/wall_stiffness.hpp"
 
 namespace cellsim {
+
+// The relaxation's stiffness and its preconditioner, with the neighbour list build its pattern was laid
+// out from (quasi_static.hpp: kept from one relaxation to the next).
+struct RelaxationStiffness {
+  explicit RelaxationStiffness(BlockStiffness pattern, long build) : stiffness(std::move(pattern)), list_build(build) {}
+  BlockStiffness stiffness;
+  long list_build;
+  NewtonPreconditioner preconditioner;
+};
+
+void RelaxationStiffnessDeleter::operator()(RelaxationStiffness* stiffness) const { delete stiffness; }
+
 namespace {
 
 // The springs' stiffness in the preconditioner gets kStiffnessShift_N_m on its diagonal (the free motions
@@ -106,16 +119,6 @@ BlockStiffness stiffness_pattern(const Simulation& sim) {
   return BlockStiffness(sim.state().wall.x.cols(), pairs);
 }
 
-// The relaxation's stiffness and its preconditioner, with the neighbour list build its pattern was laid
-// out from.
-struct RelaxationStiffness {
-  explicit RelaxationStiffness(const Simulation& sim)
-      : stiffness(stiffness_pattern(sim)), list_build(sim.neighbours().builds()) {}
-  BlockStiffness stiffness;
-  long list_build;
-  NewtonPreconditioner preconditioner;
-};
-
 // The wall's stiffness at x for the preconditioner (newton_preconditioner.hpp): the force field's terms'
 // (force_field.hpp: the springs, the bending's Gauss-Newton part on the bonds, a tissue's contacts and
 // lamella, the cells' pressures' follower stiffness, the plates), kStiffnessShift_N_m on the diagonal, and
@@ -150,8 +153,8 @@ double force_over_load(const Simulation& sim, const RotationHold* hold) {
 // starts from the history of the last accepted point.
 class WallRelaxation final : public NewtonProblem {
  public:
-  WallRelaxation(Simulation& sim, const IncrementFluid& increments, const RotationHold* hold)
-      : sim_(sim), increments_(increments), hold_(hold), history_(WallHistory::of(sim.state())) {}
+  WallRelaxation(Simulation& sim, const IncrementFluid& increments, const RotationHold* hold, KeptStiffness& stiffness)
+      : sim_(sim), increments_(increments), hold_(hold), history_(WallHistory::of(sim.state())), stiffness_(stiffness) {}
 
   Point evaluate(const Eigen::Matrix3Xd& x) override {
     Point point{x, forces_at(sim_, x, history_)};
@@ -164,7 +167,7 @@ class WallRelaxation final : public NewtonProblem {
   void accept_last() override { history_ = WallHistory::of(sim_.state()); }
   // The pattern is laid out at the first factoring, from the lists the first evaluation left.
   void factor_at(const Point& point) override {
-    if (!stiffness_) stiffness_.emplace(sim_);
+    if (!stiffness_) stiffness_.reset(new RelaxationStiffness(stiffness_pattern(sim_), sim_.neighbours().builds()));
     cellsim::factor_at(sim_, increments_, point.x, history_, *stiffness_);
   }
   Eigen::VectorXd precondition(const Eigen::VectorXd& r) const override { return stiffness_->preconditioner.solve(r); }
@@ -177,7 +180,7 @@ class WallRelaxation final : public NewtonProblem {
   const IncrementFluid& increments_;
   const RotationHold* hold_;
   WallHistory history_;
-  std::optional<RelaxationStiffness> stiffness_;
+  KeptStiffness& stiffness_;
 };
 
 }  // namespace
@@ -186,11 +189,12 @@ class WallRelaxation final : public NewtonProblem {
 // max_move_over_rest_length of a bond's mean rest length in one step. The loss is the fall of the potential
 // from start to end, less what the wall's history dissipated on the way (plastic_loss_J, lamella_loss_J).
 Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance, std::int64_t max_iterations,
-                       const RotationHold* hold, double max_move_over_rest_length) {
+                       const RotationHold* hold, double max_move_over_rest_length, KeptStiffness* kept) {
   State& s = sim.mutable_state();
   s.wall.v.setZero();
   const double max_move_m = max_move_over_rest_length * mean_rest_length_m(sim);
-  WallRelaxation relaxation(sim, increments, hold);
+  KeptStiffness own;
+  WallRelaxation relaxation(sim, increments, hold, kept ? *kept : own);
   const NewtonResult result = minimise(relaxation, s.wall.x, {tolerance, max_iterations, max_move_m});
   relaxation.leave_at(result.end.x);
   Equilibrium eq;
@@ -228,7 +232,7 @@ Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int6
                                                       double max_move_over_rest_length) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();
-  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold, max_move_over_rest_length);
+  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold, max_move_over_rest_length, &stiffness_);
   if (!eq.converged || !sim.period_follows()) return eq;
   const State& s = sim.state();
   const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
@@ -251,7 +255,7 @@ Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int6
     sim.refresh_rates();
     potential_now(sim, increments_, after_J, dissipated_after_J);
     const Equilibrium next =
-        relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold, max_move_over_rest_length);
+        relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold, max_move_over_rest_length, &stiffness_);
     eq.iterations += next.iterations;
     eq.residual = next.residual;
     eq.converged = next.converged;

@@ -23,6 +23,7 @@
 // A lone cell's rigid rotation is held in compression (compression.cell_rotation, rotation_hold.hpp):
 // its forces, moves and products are projected onto the hold, and its equilibrium is the projected one.
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include <Eigen/Core>
@@ -48,11 +49,21 @@ struct Equilibrium {
 // relaxation (newton_solver.hpp), unless the caller asks for less.
 constexpr double kMaxMoveOverRestLength = 0.25;
 
+// The relaxation's stiffness pattern and preconditioner (quasi_static.cpp). A caller that relaxes the same
+// wall again and again (the scheme) keeps it, so its factor's ordering is found once, and again only where
+// a tissue's neighbour list was rebuilt (the contacts the pattern holds moved on).
+struct RelaxationStiffness;
+struct RelaxationStiffnessDeleter {
+  void operator()(RelaxationStiffness* stiffness) const;
+};
+using KeptStiffness = std::unique_ptr<RelaxationStiffness, RelaxationStiffnessDeleter>;
+
 // Relaxes the wall of sim in place to equilibrium under its loads now, within max_iterations, in the
-// increment its fluid's quasi-static face has begun; a held cell's on its hold (null: none).
+// increment its fluid's quasi-static face has begun; a held cell's on its hold (null: none); with the
+// stiffness kept in `kept` where given (its pattern laid out there at the first call).
 Equilibrium relax_wall(Simulation& sim, const IncrementFluid& increments, double tolerance,
                        std::int64_t max_iterations, const RotationHold* hold = nullptr,
-                       double max_move_over_rest_length = kMaxMoveOverRestLength);
+                       double max_move_over_rest_length = kMaxMoveOverRestLength, KeptStiffness* kept = nullptr);
 
 // The scheme: its steps; from the compression's start its hold on a lone cell's rotation
 // (compression.cell_rotation = held); a periodic slab's lateral modulus, the secant of its period's last
@@ -92,6 +103,7 @@ class QuasiStaticScheme final : public Scheme {
   bool secant_;                                    // time.predictor = secant
   Eigen::Matrix3Xd last_motion_m_;                 // the last accepted increment's motion of the wall
   double last_motion_s_ = 0;                       // and its length (0: none yet in this stage)
+  KeptStiffness stiffness_;                        // the relaxations' pattern and ordering, kept
 };
 
 }  // namespace cellsim
