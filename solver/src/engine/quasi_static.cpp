@@ -153,8 +153,10 @@ double force_over_load(const Simulation& sim, const RotationHold* hold) {
 // starts from the history of the last accepted point.
 class WallRelaxation final : public NewtonProblem {
  public:
-  WallRelaxation(Simulation& sim, const IncrementFluid& increments, const RotationHold* hold, KeptStiffness& stiffness)
-      : sim_(sim), increments_(increments), hold_(hold), history_(WallHistory::of(sim.state())), stiffness_(stiffness) {}
+  WallRelaxation(Simulation& sim, const IncrementFluid& increments, const RotationHold* hold,
+                 KeptStiffness& stiffness)
+      : sim_(sim), increments_(increments), hold_(hold), history_(WallHistory::of(sim.state())),
+        stiffness_(stiffness) {}
 
   Point evaluate(const Eigen::Matrix3Xd& x) override {
     Point point{x, forces_at(sim_, x, history_)};
@@ -165,9 +167,11 @@ class WallRelaxation final : public NewtonProblem {
   }
   const Eigen::Matrix3Xd& unconstrained_force(const Eigen::Matrix3Xd& x) override { return forces_at(sim_, x, history_); }
   void accept_last() override { history_ = WallHistory::of(sim_.state()); }
-  // The pattern is laid out at the first factoring, from the lists the first evaluation left.
+  // The pattern is laid out at the first factoring (of the first relaxation where it is kept), from the
+  // lists the first evaluation left.
   void factor_at(const Point& point) override {
-    if (!stiffness_) stiffness_.reset(new RelaxationStiffness(stiffness_pattern(sim_), sim_.neighbours().builds()));
+    if (!stiffness_)
+      stiffness_.reset(new RelaxationStiffness(stiffness_pattern(sim_), sim_.neighbours().builds()));
     cellsim::factor_at(sim_, increments_, point.x, history_, *stiffness_);
   }
   Eigen::VectorXd precondition(const Eigen::VectorXd& r) const override { return stiffness_->preconditioner.solve(r); }
@@ -232,7 +236,8 @@ Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int6
                                                       double max_move_over_rest_length) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();
-  Equilibrium eq = relax_wall(sim, increments_, tolerance, max_iterations, hold, max_move_over_rest_length, &stiffness_);
+  Equilibrium eq =
+      relax_wall(sim, increments_, tolerance, max_iterations, hold, max_move_over_rest_length, &stiffness_);
   if (!eq.converged || !sim.period_follows()) return eq;
   const State& s = sim.state();
   const auto lateral_stress = [&] { return Eigen::Vector2d(s.lateral_stress_x_Pa, s.lateral_stress_y_Pa); };
@@ -254,8 +259,8 @@ Equilibrium QuasiStaticScheme::relax_wall_and_period(double tolerance, std::int6
     sim.strain_period(by);
     sim.refresh_rates();
     potential_now(sim, increments_, after_J, dissipated_after_J);
-    const Equilibrium next =
-        relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold, max_move_over_rest_length, &stiffness_);
+    const Equilibrium next = relax_wall(sim, increments_, tolerance, max_iterations - eq.iterations, hold,
+                                        max_move_over_rest_length, &stiffness_);
     eq.iterations += next.iterations;
     eq.residual = next.residual;
     eq.converged = next.converged;
@@ -314,10 +319,11 @@ void QuasiStaticScheme::start_at_secant(double h_s, const Eigen::Matrix3Xd& last
 }
 
 // One increment of h_s: the loads move (the plates, the drying ramp), the wall touching a plate with it
-// (increment_predictor.hpp) and, with the secant predictor, the wall by its last motion, Eq 11 is integrated over it and the wall relaxed. The loads' work over it is the
-// trapezoid of their powers at the two equilibria (the plate's force x its speed, the ramp's rate of the
-// stored energy: the rates of the last evaluation are the start's); the relaxation's loss closes the account
-// from the stored energy's jump over the move.
+// (increment_predictor.hpp) and, with the secant predictor, the wall by its last motion; Eq 11 is
+// integrated over it and the wall relaxed. The loads' work over it is the trapezoid of their powers at the
+// two equilibria (the plate's force x its speed, the ramp's rate of the stored energy: the rates of the
+// last evaluation are the start's); the relaxation's loss closes the account from the stored energy's jump
+// over the move.
 QuasiStaticScheme::Increment QuasiStaticScheme::advance_by(double h_s, double max_move_over_rest_length) {
   Simulation& sim = sim_;
   const RotationHold* hold = rotation_hold();

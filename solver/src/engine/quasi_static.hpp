@@ -15,10 +15,11 @@
 // A step moves the loads with the wall that touches a plate keeping its overlap (a plate pushed at fixed
 // particles would thrust them k_pw x its travel into its springs, and a soft wall relaxed from there
 // dimples onto another branch); with time.predictor = secant the wall also moves by the last increment's
-// motion, scaled, where that starts nearer equilibrium (increment_predictor.hpp). The energy account: the loads' work is the trapezoid of their powers at
-// the two equilibria (plate work: its force x its speed; drive: the ramp of P_T and L_ref), Eq 11's water
-// a jump per step (cavity_fluid.hpp), and the relaxation's loss the rest: what the wall released in snaps
-// as it folded, and the trapezoid's error, which shrinks as dt^2.
+// motion, scaled, where that starts nearer equilibrium (increment_predictor.hpp). The energy account: the
+// loads' work is the trapezoid of their powers at the two equilibria (plate work: its force x its speed;
+// drive: the ramp of P_T and L_ref), Eq 11's water a jump per step (cavity_fluid.hpp), and the
+// relaxation's loss the rest: what the wall released in snaps as it folded, and the trapezoid's error,
+// which shrinks as dt^2.
 // The wall's history (plastic sliders, the lamella's damage) follows the accepted points only.
 // A lone cell's rigid rotation is held in compression (compression.cell_rotation, rotation_hold.hpp):
 // its forces, moves and products are projected onto the hold, and its equilibrium is the projected one.
