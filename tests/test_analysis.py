@@ -40,9 +40,10 @@ def test_hidden_and_keyless_axes_name_what_the_case_runs(config):
     # The LJ studies: 3 dryness x (3 levels + pressure at level 1 + dt 0.5 for both) = 18; the ladder and
     # its anchors and sweeps: 32 more (config/config.yaml says which); the closed cells: 19 more
     assert len(convergence) == 69
-    closed = cases["D150_dt200_Fcavity_G18_P200_R2_t6_v1_X1"]  # the closed cell's coupled keys and the level's
+    closed = cases["D150_dt200_Fcavity_G18_Iadaptive_P200_R2_t6_v1_X1"]  # the closed cell's coupled keys, the level's
     assert closed.case["fluid"]["model"] == "cavity" and closed.case["time"]["scheme"] == "quasi_static"
     assert closed.case["time"]["dt_ns"] == 200 and closed.case["cell"]["n_wall"] == 4134
+    assert closed.case["time"]["min_increment_ns"] == 3.125  # the increments axis: adaptive at its snaps
     assert "Cpressure_D150_G18_P200_t6_v1_X0.5" in convergence  # a name: the coupling axis takes names
     ladder = cases["Cpressure_D150_dt0.5_G18_H1.2_P200_R3_t6_v1_X0.1"]  # a single-valued axis fixes a setting
     assert ladder.case["fluid"]["h_over_dx"] == 1.2 and ladder.case["time"]["dt_ns"] == 0.5
