@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import jsonschema
 import yaml
 
+from analysis import design
 from analysis.quantities import DRAWABLE, MODULI  # the solver's time series, those derived, the moduli
 
 
@@ -160,6 +161,14 @@ def check(config, root="."):
     if len(set(labels)) != len(labels):
         raise ConfigError(f"axes: labels must be distinct, got {labels}")
     for study, spec in studies.items():
+        if "design" in spec:
+            try:
+                design.check(study, spec["design"], axes)
+            except design.DesignError as error:
+                raise ConfigError(str(error)) from error
+            both = sorted(set(spec["vary"]) & set(spec["design"]["factors"]))
+            if both:
+                raise ConfigError(f"studies.{study}: {both} both varied and a design's factors; name each in one")
         for axis in spec["vary"]:
             if axis not in axes:
                 raise ConfigError(f"studies.{study}.vary.{axis}: unknown axis; known: {sorted(axes)}")
@@ -362,21 +371,64 @@ def workflow_config(configfiles, root="."):
     return config
 
 
+def study_points(config, spec):
+    """A study's points as axis values: the product of its `vary`, times its design's points if it has
+    one (analysis/design.py), each with its role in the design (None without one)."""
+    varied = list(spec["vary"])
+    rows = [(None, {})]
+    if "design" in spec:
+        rows = [(role, values) for role, values in design.points(spec["design"])]
+    for combo in itertools.product(*(spec["vary"][a] for a in varied)):
+        for role, values in rows:
+            yield role, {**dict(zip(varied, combo)), **values}
+
+
+def with_design_keys(config, spec, case, values):
+    """A design's keys beyond its factors: those a factor scales (`scales`), then those every point sets
+    (`set`, e.g. a compression cap long enough for its slowest plates)."""
+    for factor, fspec in spec["design"]["factors"].items():
+        for key, power in fspec.get("scales", {}).items():
+            ratio = values[factor] / base_value(config, factor)
+            set_key(case, key, design.scaled(get_key(config["base"], key) or case_default(key), ratio, power))
+    for key, value in spec["design"].get("set", {}).items():
+        set_key(case, key, value)
+
+
+def study_case(config, spec, point, base_values=None, schema=None):
+    """(the cellsim case, its axis values) of one point of a study ({axis: value}, the rest at base), with its
+    design's keys if it has one."""
+    base_values = base_values or {axis: base_value(config, axis) for axis in config["axes"]}
+    case, values = build(config, {**base_values, **point}, schema or case_schema())
+    if "design" in spec:
+        with_design_keys(config, spec, case, values)
+    return case, values
+
+
 def expand(config):
-    """All cases of all studies, deduplicated: {name: Case}, in a stable order."""
+    """All cases of all studies, deduplicated: {name: Case}, in a stable order. A case named twice must be
+    one run (a design's scaled or set keys could make two cases of one name differ): refused otherwise."""
     base_values = {axis: base_value(config, axis) for axis in config["axes"]}
     schema = case_schema()
     cases = {}
     for study, spec in config["studies"].items():
-        varied = list(spec["vary"])
-        for combo in itertools.product(*(spec["vary"][a] for a in varied)):
-            case, values = build(config, {**base_values, **dict(zip(varied, combo))}, schema)
+        for _role, point in study_points(config, spec):
+            case, values = study_case(config, spec, point, base_values, schema)
             name = case_name(config, values)
             if name not in cases:
                 cases[name] = Case(name, dried_name(config, values), rest_name(config, values), values, case)
+            elif cases[name].case != case:
+                raise ConfigError(f"studies.{study}: case {name} is also another study's, with different keys "
+                                  f"(a design's scales or set): give one of them an axis value that tells them apart")
             if study not in cases[name].studies:
                 cases[name].studies.append(study)
     return cases
+
+
+def design_roles(config, study):
+    """{case name: role} of a design study's cases: 'train', 'held_out' or 'check' (analysis/design.py)."""
+    spec, base_values = config["studies"][study], {axis: base_value(config, axis) for axis in config["axes"]}
+    return {case_name(config, build(config, {**base_values, **point})[1]): role
+            for role, point in study_points(config, spec)}
 
 
 def dried_states(cases):
