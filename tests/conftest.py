@@ -154,3 +154,16 @@ def tiny_run(root, tmp_path_factory):
     """The workflow on the tiny matrix, uninterrupted, on the local machine: the reference that a resumed
     run and a run through SLURM must equal byte for byte."""
     return run_workflow(root, tmp_path_factory.mktemp("tiny-results"), TINY)
+
+
+def emulator_page_prediction(page, fragment):
+    """The emulator's slider page (analysis/emulator_page.py) opened in headless Chromium at a setting in
+    its address: (its status line, its prediction table as rows of strain, median, 95 % low and high)."""
+    import shutil
+    import numpy as np
+    dom = subprocess.run([shutil.which("chromium"), "--headless", "--no-sandbox", "--virtual-time-budget=5000",
+                          "--dump-dom", f"{page.as_uri()}#{fragment}"], capture_output=True, text=True,
+                         timeout=120).stdout
+    status = re.search(r'<div id="status">([^<]*)</div>', dom)
+    rows = re.findall(r"<tr><td>([\d.]+)</td><td>([\d.e+-]+)</td><td>([\d.e+-]+)</td><td>([\d.e+-]+)</td></tr>", dom)
+    return (status.group(1) if status else dom[-1500:]), np.array(rows, dtype=float)

@@ -83,6 +83,19 @@ def row_with_legend(n_cols, n_entries, panel_w=3.2, panel_h=3.0, sharey=False):
     return figure, panels, legend_axes
 
 
+def grid_with_legend(n_rows, n_cols, n_entries, panel_w=3.2, panel_h=3.0):
+    """row_with_legend for a grid of panels: n_rows x n_cols panels of one size, the legend's row below them.
+    Returns the figure, the panels (n_rows x n_cols, a list of lists) and the legend's axes."""
+    width = panel_w * n_cols + 0.6
+    legend_h = 0.2 + 0.19 * math.ceil(max(n_entries, 1) / legend_columns(width, n_entries))
+    figure = plt.figure(figsize=(width, panel_h * n_rows + 0.8 + legend_h), layout="constrained")
+    cells = figure.add_gridspec(n_rows + 1, n_cols, height_ratios=[panel_h] * n_rows + [legend_h])
+    panels = [[figure.add_subplot(cells[i, j]) for j in range(n_cols)] for i in range(n_rows)]
+    legend_axes = figure.add_subplot(cells[n_rows, :])
+    legend_axes.set_axis_off()
+    return figure, panels, legend_axes
+
+
 def legend_below(legend_axes, panels):
     """Every distinct label of the panels, once, in the legend row (row_with_legend)."""
     handles, labels = {}, []
