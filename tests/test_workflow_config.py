@@ -121,6 +121,13 @@ def write_config(tmp_path, change):
     ({"base": {"cell": {"n_fluid": 8717, "n_wall": 4134}, "settle": {"max_iterations": 40000}}},
      ["axes.resolution: base sets cell.n_fluid = 8717", "as its value 2 does",
       "studies.convergence_resolution"]),                                          # level-2 cells called level 1
+    ({"calibration": {"targets": {"my_probe": {"quantity": "volumetric_modulus_MPa", "where": {"dryness": 1.0},
+                                               "value": 3.0, "provenance": "my lab"}}}},
+     ["calibration.targets.my_probe: no uncertainty"]),                             # a target believed exactly
+    ({"calibration": {"unknowns": ["contraction_N_m", "turgor_kPa"]}},
+     ["calibration.unknowns: 'turgor_kPa' has no prior range"]),                     # an unknown without a prior
+    ({"studies": {"sensitivity": {"design": {"factors": {"G_MPa": {"range": [18, 0.18]}}}}}},
+     ["studies.sensitivity.design.factors.G_MPa.range: [18, 0.18] is not low < high"]),  # a design's bad range
 ])
 def test_bad_config_stops_before_any_job_and_names_the_key(root, tmp_path, change, named):
     done = dry_run(root, "--configfile", str(write_config(tmp_path, change)), "--config", f"output_dir={tmp_path}")

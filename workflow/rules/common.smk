@@ -5,14 +5,16 @@ import sys
 from snakemake.exceptions import WorkflowError
 
 sys.path.insert(0, workflow.basedir)
-from analysis import columns, comparison, matrix  # noqa: E402
+from analysis import calibration, columns, comparison, matrix  # noqa: E402
 from analysis.figures import render  # noqa: E402
 
 try:
     matrix.check(config, workflow.basedir)
+    if "calibration" in config:
+        calibration.check(config)  # a target without its uncertainty, an unknown without a prior range
     CASES = matrix.expand(config)  # {case name: Case}, of every target
     REST = matrix.rest_states(CASES)  # {rest name: case dict}: each cell settled once, for all its dryness levels
-except matrix.ConfigError as error:
+except (matrix.ConfigError, calibration.CalibrationError) as error:
     raise WorkflowError(f"config: {error}")
 
 OUT = config["output_dir"]
