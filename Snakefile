@@ -6,6 +6,8 @@
 #   snakemake --cores 2 tissue                        a slab of closed cells against one cell (not default;
 #                                                     also tissue_bounds, tissue_check, tissue_large)
 #   snakemake --cores 2 extensions                    elastic-plastic wall, heterogeneous ensembles (not default)
+#   snakemake --cores 2 sensitivity                   a Sobol design, its emulators, Sobol indices, a slider page
+#   snakemake --cores 2 calibrate                     the wall's unknowns given measured numbers (a posterior)
 #   snakemake --cores 2 --configfile config/converged.yaml [converged_bounds]
 #                                                     the paper's claims judged three ways [the rate and drainage bounds]
 from snakemake.exceptions import WorkflowError
@@ -47,7 +49,7 @@ include: "workflow/rules/common.smk"
 localrules: all, build_solver, case_file, dried_case_file, rest_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
     convergence, aggregate_target, convergence_page, tissue, tissue_bounds, tissue_clusters, tissue_check, \
     tissue_large, tissue_page, \
-    extensions, extensions_page, converged_bounds, converged_bounds_page
+    extensions, extensions_page, converged_bounds, converged_bounds_page, design_table, sensitivity, sensitivity_analysis, calibrate, calibration_posterior, calibration_page
 
 
 include: "workflow/rules/solver.smk"
@@ -57,6 +59,7 @@ include: "workflow/rules/convergence.smk"
 include: "workflow/rules/tissue.smk"
 include: "workflow/rules/extensions.smk"
 include: "workflow/rules/bounds.smk"
+include: "workflow/rules/sensitivity.smk"
 
 
 rule all:
