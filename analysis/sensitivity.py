@@ -60,10 +60,19 @@ def baseline_unit(config, spec):
     return np.array(point)
 
 
+def centred_interval(estimate, replicates):
+    """The 95 % interval of the replicates' spread about their own mean, centred on the estimate: a resample
+    repeats some runs, which shifts the replicates' indices alike, enough to leave a near-zero estimate
+    outside a plain percentile interval; the spread is the uncertainty, the shift is not."""
+    centre = replicates.mean(axis=0)
+    return (estimate + np.percentile(replicates, 2.5, axis=0) - centre,
+            estimate + np.percentile(replicates, 97.5, axis=0) - centre)
+
+
 def sobol_table(config, frame, spec, emulators, seed=11):
     """Per answer and factor: the first and total Sobol indices of the emulator's mean, their 95 % intervals
-    (BOOTSTRAP emulators refitted, kernel kept, on runs drawn with replacement, each with its own Sobol
-    sequence), and the one-at-a-time share around the paper's baseline."""
+    (the spread of BOOTSTRAP emulators refitted, kernel kept, on runs drawn with replacement, each with its
+    own Sobol sequence: centred_interval), and the one-at-a-time share around the paper's baseline."""
     train = frame[frame["role"] == "train"]
     x = design.unit_matrix(train, spec)
     factors = list(spec["factors"])
@@ -81,12 +90,12 @@ def sobol_table(config, frame, spec, emulators, seed=11):
                                             BOOTSTRAP_POINTS, seed + 1 + b))
         firsts, totals = np.array([r[0] for r in replicates]), np.array([r[1] for r in replicates])
         oat = sobol.one_at_a_time(lambda u: emulator.predict_mean(em, u), base)
+        first_low, first_high = centred_interval(first, firsts)
+        total_low, total_high = centred_interval(total, totals)
         for i, factor in enumerate(factors):
-            rows.append({"answer": column, "factor": factor, "first": first[i],
-                         "first_low": np.percentile(firsts[:, i], 2.5), "first_high": np.percentile(firsts[:, i], 97.5),
-                         "total": total[i],
-                         "total_low": np.percentile(totals[:, i], 2.5), "total_high": np.percentile(totals[:, i], 97.5),
-                         "one_at_a_time": oat[i]})
+            rows.append({"answer": column, "factor": factor, "first": first[i], "first_low": first_low[i],
+                         "first_high": first_high[i], "total": total[i], "total_low": total_low[i],
+                         "total_high": total_high[i], "one_at_a_time": oat[i]})
     return pd.DataFrame(rows)
 
 

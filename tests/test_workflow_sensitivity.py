@@ -1,7 +1,7 @@
 """The sensitivity and calibrate targets end to end on reduced cells and small designs
 (tests/sensitivity_reduced.yaml): their runs, tables, figures and pages; the slider page opened in headless
 Chromium at the design's check point gives the prediction the target wrote beside the full run there; and
-the calibration's run at the posterior's median. Slow: about four minutes on 2 cores."""
+the calibration's run at the posterior's median. Slow: about a minute on 2 cores."""
 import shutil
 
 import numpy as np
