@@ -139,8 +139,14 @@ def log_posterior_function(emulators, targets, factors, unknowns):
     return log_posterior
 
 
+ENOUGH_AUTOCORRELATION_TIMES = 50  # emcee's advice for the kept chain
+MORE_STEPS_AT_MOST = 4              # a chain that mixes slowly is run on, up to this many times its steps
+
+
 def sample(log_posterior, dimensions, sampler_spec):
-    """emcee's ensemble sampler from points spread over the prior; (chain after burn-in, flat, diagnostics)."""
+    """emcee's ensemble sampler from points spread over the prior, run on (doubling) until the kept chain is
+    50 autocorrelation times long or MORE_STEPS_AT_MOST times its steps; (flat chain after burn-in,
+    diagnostics)."""
     walkers, steps = sampler_spec.get("walkers", 32), sampler_spec.get("steps", 3000)
     burn, seed = sampler_spec.get("burn", steps // 3), sampler_spec.get("seed", 1)
     if burn >= steps:
@@ -150,14 +156,20 @@ def sample(log_posterior, dimensions, sampler_spec):
     mcmc = emcee.EnsembleSampler(walkers, dimensions, log_posterior, vectorize=True)
     mcmc.random_state = rng.get_state()
     mcmc.run_mcmc(start, steps, progress=False)
-    chain = mcmc.get_chain(discard=burn)
-    tau = emcee.autocorr.integrated_time(chain, quiet=True)
-    diagnostics = {"walkers": walkers, "steps": steps, "burn": burn,
+    ran = steps
+    while True:
+        chain = mcmc.get_chain(discard=burn)
+        tau = emcee.autocorr.integrated_time(chain, tol=0)
+        if (ran - burn) / np.max(tau) >= ENOUGH_AUTOCORRELATION_TIMES or ran >= MORE_STEPS_AT_MOST * steps:
+            break
+        mcmc.run_mcmc(None, ran, progress=False)
+        ran *= 2
+    diagnostics = {"walkers": walkers, "steps": ran, "steps_asked": steps, "burn": burn,
                    "acceptance_mean": float(np.mean(mcmc.acceptance_fraction)),
                    "acceptance_min": float(np.min(mcmc.acceptance_fraction)),
                    "autocorrelation_steps": [float(t) for t in tau],
-                   "kept_over_autocorrelation": float((steps - burn) / np.max(tau)),
-                   "independent_samples": float(walkers * (steps - burn) / np.max(tau))}
+                   "kept_over_autocorrelation": float((ran - burn) / np.max(tau)),
+                   "independent_samples": float(walkers * (ran - burn) / np.max(tau))}
     return chain.reshape(-1, dimensions), diagnostics
 
 

@@ -22,13 +22,14 @@ def targets_table(config):
 
 
 def verdicts(config, posterior):
-    """A sentence per unknown: its median and 90 % interval against the paper's value."""
+    """A sentence per unknown: its median and 90 % interval against the baseline's value (config base: the
+    paper's wall; its c is ours)."""
     items = []
     for _, r in posterior.iterrows():
         title = html.escape(config["axes"][r["unknown"]]["title"])
         items.append(f"<li><b>{title}</b>: median {r['median']:.3g}, 90 % in {r['p05']:.3g}-{r['p95']:.3g} (prior "
-                     f"{r['prior_low']:g}-{r['prior_high']:g}); the paper's {r['paper']:g} is {r['paper'] / r['median']:.3g} "
-                     f"times the median and lies at or above {100 * r['paper_quantile']:.1f} % of the posterior.</li>")
+                     f"{r['prior_low']:g}-{r['prior_high']:g}); the baseline's {r['baseline']:g} is {r['baseline'] / r['median']:.3g} "
+                     f"times the median and lies at or above {100 * r['baseline_quantile']:.1f} % of the posterior.</li>")
     return "<ul>" + "".join(items) + "</ul>"
 
 
@@ -46,11 +47,14 @@ def write(path, config, tables, diagnostics, figure_files):
              "<h2>The targets</h2>", html_page.frame_table(targets_table(config)),
              "<h2>The emulators against the targets' uncertainty</h2><p>Each emulator's rms error on the design's "
              "held-out runs, in the target's units (ln where the target is given by sigma_ln), must be below the "
-             "target's sd, or the calibration stops.</p>", html_page.frame_table(tables["judged"]),
-             "<h2>The posterior</h2><p>Median and 5-95 % interval; paper_quantile: where the paper's value lies in "
+             "target's sd, or the calibration stops. sd_scale: how much the emulator's sd is widened in the "
+             "likelihood so that its held-out runs sit at one sd on average (1: not widened).</p>", html_page.frame_table(tables["judged"]),
+             "<h2>The posterior</h2><p>Median and 5-95 % interval; baseline: config's base, the paper's wall (c = 0.4 is "
+             "ours); baseline_quantile: where it lies in "
              "the posterior (the share of samples below it).</p>", verdicts(config, tables["posterior"]),
              html_page.frame_table(tables["posterior"]),
-             f"<p>The chains: {d['walkers']} walkers x {d['steps']} steps, the first {d['burn']} dropped; acceptance "
+             f"<p>The chains: {d['walkers']} walkers x {d['steps']} steps ({d['steps_asked']} asked, run on while "
+             f"shorter than 50 autocorrelation times), the first {d['burn']} dropped; acceptance "
              f"{d['acceptance_mean']:.2f} on average (lowest walker {d['acceptance_min']:.2f}); integrated "
              f"autocorrelation times {tau} steps, the kept chain {d['kept_over_autocorrelation']:.0f} times the "
              f"longest (emcee asks for more than 50), about {d['independent_samples']:.0f} independent samples.</p>",

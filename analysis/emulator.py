@@ -4,11 +4,12 @@ Fitted with scikit-learn (a constant times an anisotropic squared-exponential ke
 what the runs do not repeat: a dynamic cell's ripple, a fold's two landings), then kept as plain numbers so
 that this module's predict() and the slider page's JavaScript give the same prediction:
 
-    mean(x) = y_mean + y_std * k(x)^T alpha,   var(x) = y_std^2 * (c + noise - |L^-1 k(x)|^2),
+    mean(x) = y_mean + y_std * k(x)^T alpha,   var(x) = (s y_std)^2 * (c + noise - |L^-1 k(x)|^2),
     k_i(x) = c exp(-|(x - x_i) / l|^2 / 2),
 
 with x in the unit cube of the design (analysis/design.py), alpha = (K + noise I)^-1 (y - y_mean) / y_std and L
-its Cholesky factor. The variance holds the noise: the band is where a new run would fall. Answers that span
+its Cholesky factor, s = sd_scale (1 unless widened to held-out runs). The variance holds the noise: the band
+is where a new run would fall. Answers that span
 orders of magnitude (stress, eps) are emulated in their logarithm (`transform: log`).
 """
 import warnings
@@ -76,7 +77,7 @@ def predict(emulator, x_unit):
     mean = emulator["y_mean"] + emulator["y_std"] * (k @ emulator["alpha"])
     v = solve_triangular(emulator["L"], k.T, lower=True)
     var = emulator["constant"] + emulator["noise"] - np.sum(v ** 2, axis=0)
-    return mean, emulator["y_std"] * np.sqrt(np.maximum(var, 0.0))
+    return mean, emulator.get("sd_scale", 1.0) * emulator["y_std"] * np.sqrt(np.maximum(var, 0.0))
 
 
 def predict_mean(emulator, x_unit):
@@ -94,6 +95,14 @@ def held_out_check(emulator, x_unit, y):
             "rmse": float(np.sqrt(np.mean(residual ** 2))),
             "coverage_95": float(np.mean(np.abs(residual) <= Z95 * sd)),
             "band_95_mean": float(np.mean(Z95 * sd)), "runs": int(len(z))}
+
+
+def widened_to_held_out(emulator, x_unit, y):
+    """The emulator with its sd scaled so that held-out runs sit at one sd on average (rms of residual / sd),
+    where they sat further: a process fitted to few runs can be surer than its errors ("sd_scale", >= 1)."""
+    z = forward(np.asarray(y, dtype=float), emulator["transform"])
+    mean, sd = predict({**emulator, "sd_scale": 1.0}, x_unit)
+    return {**emulator, "sd_scale": max(1.0, float(np.sqrt(np.mean(((z - mean) / sd) ** 2))))}
 
 
 def as_json(emulator):

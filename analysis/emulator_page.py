@@ -37,7 +37,7 @@ function fromUnit(f, u) {
   const [lo, hi] = f.range;
   return f.scale === "log" ? lo * Math.exp(u * Math.log(hi / lo)) : lo + u * (hi - lo);
 }
-// mean = y_mean + y_std k.alpha; var = y_std^2 (c + noise - |L^-1 k|^2): analysis/emulator.py predict()
+// mean = y_mean + y_std k.alpha; var = (sd_scale y_std)^2 (c + noise - |L^-1 k|^2): analysis/emulator.py predict()
 function predict(em, u) {
   const n = em.alpha.length, k = new Float64Array(n);
   for (let i = 0; i < n; i++) {
@@ -56,7 +56,7 @@ function predict(em, u) {
     vv += v[i] * v[i];
   }
   const variance = Math.max(em.constant + em.noise - vv, 0);
-  return [em.y_mean + em.y_std * m, em.y_std * Math.sqrt(variance)];
+  return [em.y_mean + em.y_std * m, (em.sd_scale || 1) * em.y_std * Math.sqrt(variance)];
 }
 const Z95 = 1.959964;
 const sliders = {}, current = {};  // a setting from the address is kept exactly until its slider moves

@@ -111,4 +111,15 @@ def test_the_documented_way_to_add_a_measured_number_is_a_calibration_the_config
     merged["calibration"]["targets"].update(mine["calibration"]["targets"])
     _spec, unknowns, targets = calibration.check(merged)
     assert ("my_probe_modulus", "volumetric_modulus_MPa@dryness=1", 12.0, 0.3, "log") in targets
-    assert len(targets) == 3 and unknowns == ["contraction_N_m", "G_MPa", "t0_um"]
+    assert len(targets) == 3 and unknowns == ["contraction_N_m", "G_MPa", "t0_um", "contraction_ratio"]
+
+
+def test_a_curve_target_is_one_column_per_strain_and_a_strain_the_design_does_not_record_is_refused():
+    curve = {"quantity": "stress_kPa", "where": {"dryness": 1.0}, "strains": [0.05, 0.10], "value": [40.0, 120.0],
+             "sigma": [5.0, 12.0], "provenance": "a lab's single-cell compression"}
+    assert calibration.target_columns("cell_curve", curve) == [
+        ("stress_kPa_at_0.05@dryness=1", 40.0, 5.0, "none"), ("stress_kPa_at_0.10@dryness=1", 120.0, 12.0, "none")]
+    with pytest.raises(calibration.CalibrationError, match=r"strains: \[0.07\] are not among the strains"):
+        calibration.target_columns("cell_curve", {**curve, "strains": [0.05, 0.07]})
+    with pytest.raises(calibration.CalibrationError, match="a curve needs as many strains, values and sigmas"):
+        calibration.target_columns("cell_curve", {**curve, "sigma": [5.0]})

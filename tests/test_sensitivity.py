@@ -113,3 +113,16 @@ def test_one_at_a_time_shares_match_the_first_order_for_an_additive_function_onl
     assert np.allclose(sobol.one_at_a_time(additive, np.array([0.5, 0.5])), first, atol=0.02)
     # Ishigami's x3 acts only through x1: one at a time from x1 = 0 (sin 0 = 0) it seems to do nothing
     assert sobol.one_at_a_time(ishigami, np.array([0.5, 0.5, 0.5]))[2] < 1e-12
+
+
+def test_an_overconfident_emulator_is_widened_to_its_held_out_errors_and_a_modest_one_is_not():
+    x, held = design.unit_points(16, 3, 5), design.unit_points(32, 3, 6)
+    em = emulator.fit(x, smooth(x))
+    mean, sd = emulator.predict(em, held)
+    widened = emulator.widened_to_held_out(em, held, smooth(held))
+    z = (smooth(held) - mean) / sd
+    assert widened["sd_scale"] == pytest.approx(max(1.0, np.sqrt(np.mean(z ** 2))))
+    _, wide_sd = emulator.predict(widened, held)
+    assert np.mean(((smooth(held) - mean) / wide_sd) ** 2) <= 1.0 + 1e-9
+    honest = emulator.widened_to_held_out(em, held, mean + 0.1 * sd)  # runs well inside the band
+    assert honest["sd_scale"] == 1.0

@@ -54,7 +54,7 @@ def test_calibrate_writes_a_posterior_its_diagnostics_and_a_run_at_its_median(ro
     run_workflow(root, sensitivity_run, CI + [REDUCED], "calibrate")
     cal = sensitivity_run / "tables" / "calibration"
     posterior = pd.read_csv(cal / "posterior.csv")
-    assert list(posterior["unknown"]) == ["contraction_N_m", "G_MPa", "t0_um"]
+    assert list(posterior["unknown"]) == ["contraction_N_m", "G_MPa", "t0_um", "contraction_ratio"]
     assert ((posterior["prior_low"] <= posterior["p05"]) & (posterior["p05"] <= posterior["median"])
             & (posterior["median"] <= posterior["p95"]) & (posterior["p95"] <= posterior["prior_high"])).all()
     confirm = pd.read_csv(cal / "confirm.csv")

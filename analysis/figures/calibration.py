@@ -1,8 +1,9 @@
 """The calibrate target's figures (issue 70): the posterior of the unknowns (each marginal over its prior
-range, the paper's value marked, and the first two unknowns' joint samples), and the posterior predictive of
+range, the baseline's value marked, and the joint samples of the two the data inform most), and the posterior predictive of
 each target beside the measured value."""
 import numpy as np
 
+from analysis import design
 from analysis.figures.common import figure_title, grid
 
 PAPER_COLOUR, POSTERIOR_COLOUR, PRIOR_COLOUR = "#d62728", "#1f77b4", "#7f7f7f"
@@ -20,9 +21,19 @@ def bins_of(spec, n=40):
     return np.geomspace(low, high, n + 1) if spec.get("scale") == "log" else np.linspace(low, high, n + 1)
 
 
-def draw_posterior(config, samples, unknowns, factor_specs, paper):
-    """One panel per unknown (its marginal; the prior's flat density as a grey line) and one of the first two
-    unknowns' joint samples. paper: {unknown: the paper's value} (marked in red)."""
+def most_informed(samples, unknowns, factor_specs):
+    """The two unknowns whose 90 % intervals take the smallest share of their prior ranges (in the unit
+    coordinate of the design: the log for log-scale factors), the first first."""
+    def share(u):
+        low, high = np.percentile([design.factor_to_unit(v, factor_specs[u]) for v in samples[u]], [5, 95])
+        return high - low
+    ranked = sorted(unknowns, key=share)
+    return (ranked[0], ranked[1]) if len(ranked) > 1 else (ranked[0], ranked[0])
+
+
+def draw_posterior(config, samples, unknowns, factor_specs, baseline):
+    """One panel per unknown (its marginal; the prior's flat density as a grey line) and one of the joint
+    samples of the two the data inform most. baseline: {unknown: config base's value} (the paper's wall, in red)."""
     figure, axes = grid(1, len(unknowns) + 1, panel_w=3.2, panel_h=3.0)
     for ax, u in zip(axes[0], unknowns):
         spec = factor_specs[u]
@@ -30,17 +41,17 @@ def draw_posterior(config, samples, unknowns, factor_specs, paper):
         ax.hist(samples[u], bins=bins, density=False, weights=np.full(len(samples), 1.0 / len(samples)),
                 color=POSTERIOR_COLOUR, alpha=0.7, label="posterior")
         ax.hlines(1.0 / (len(bins) - 1), bins[0], bins[-1], color=PRIOR_COLOUR, lw=1.5, label="prior")
-        ax.axvline(paper[u], color=PAPER_COLOUR, lw=1.5, label="the paper's value")
+        ax.axvline(baseline[u], color=PAPER_COLOUR, lw=1.5, label="the baseline (the paper's; c ours)")
         axis_scale(ax, spec)
         ax.set_xlim(bins[0], bins[-1])
         ax.set_xlabel(config["axes"][u]["title"])
         ax.set_ylabel("share of the samples per bin")
         ax.grid(alpha=0.3)
     ax = axes[0][-1]
-    a, b = unknowns[0], unknowns[1 if len(unknowns) > 1 else 0]
+    a, b = most_informed(samples, unknowns, factor_specs)
     pick = samples.sample(min(3000, len(samples)), random_state=1)
     ax.scatter(pick[a], pick[b], s=2, color=POSTERIOR_COLOUR, alpha=0.3)
-    ax.plot(paper[a], paper[b], "*", color=PAPER_COLOUR, ms=12, clip_on=False)  # at the range's edge (G 18)
+    ax.plot(baseline[a], baseline[b], "*", color=PAPER_COLOUR, ms=12, clip_on=False)  # G's 18 is its range's edge
     axis_scale(ax, factor_specs[a], "x")
     axis_scale(ax, factor_specs[b], "y")
     ax.set_xlim(*factor_specs[a]["range"])
@@ -50,7 +61,7 @@ def draw_posterior(config, samples, unknowns, factor_specs, paper):
     ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7)
     figure_title(figure, "The wall's unknowns given the measured numbers: the posterior (blue) over the prior "
-                         "(grey), the paper's values in red")
+                         "(grey), the paper's values in red (c: ours)")
     return figure
 
 
