@@ -14,7 +14,6 @@ import numpy as np
 from scipy.stats import qmc
 
 SIGNIFICANT_DIGITS = 4
-ROLES = ("train", "held_out", "check")
 
 
 class DesignError(ValueError):

@@ -28,10 +28,6 @@ def transform_of(column):
     return ANSWERS[column][1] if column in ANSWERS else "log"
 
 
-def factors_of(config, study):
-    return config["studies"][study]["design"]
-
-
 def fit_all(frame, spec, columns):
     """{column: emulator} fitted on the training runs."""
     train = frame[frame["role"] == "train"]
