@@ -27,11 +27,10 @@ for name, target in config["calibration"]["targets"].items():
     case, _values = matrix.study_case(config, config["studies"][study], {**fixed, **median, **where})
     tag = "_".join(f"{a}{v:g}" for a, v in sorted(where.items())) or "base"
     case_file, result = folder / f"median_{tag}.json", folder / f"median_{tag}.h5"
-    if not result.exists():
-        case_file.write_text(matrix.case_json(case))
-        extra = [] if compressed else ["--set", "compression.steps=0"]
-        print(f"calibrate: the full run at the median, {tag}", flush=True)
-        subprocess.run([sm.input.exe, "run", str(case_file), "-o", str(result), "--quiet", *extra], check=True)
+    case_file.write_text(matrix.case_json(case))
+    extra = [] if compressed else ["--set", "compression.steps=0"]
+    print(f"calibrate: the full run at the median, {tag}", flush=True)
+    subprocess.run([sm.input.exe, "run", str(case_file), "-o", str(result), "--quiet", *extra], check=True)
     ran = design_runs.outputs(result, compressed)
     for _name, column, value, sigma, scale in [t for t in targets if t[0] == name]:
         em = emulators[column]
