@@ -3,7 +3,6 @@ emulators' held-out check against each target's uncertainty, the posterior and i
 predictive beside the data, the run at the median, the recovery of a held-out run, and the figures."""
 import html
 import json
-import os
 import pathlib
 
 import pandas as pd
@@ -64,9 +63,7 @@ def write(path, config, tables, diagnostics, figure_files):
              html_page.frame_table(tables["confirm"]),
              "<h2>Recovery of a held-out run's parameters</h2><p>The first held-out run's answers, with each "
              "target's noise added, calibrated as if measured: are its own parameters inside the 90 % interval?</p>",
-             html_page.frame_table(tables["recovery"]), "<h2>Figures</h2>"]
-    for name, png in figure_files.items():
-        parts.append(f"<figure id='{name}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{name}'></figure>")
+             html_page.frame_table(tables["recovery"]), html_page.untitled_figures(figure_files, here)]
     parts.append(f"<details><summary>The chains' diagnostics as numbers</summary><pre>{html.escape(json.dumps(d, indent=1))}"
                  f"</pre></details>")
     html_page.write_page(path, "cellsim calibration", parts)

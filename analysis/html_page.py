@@ -31,6 +31,14 @@ def figure_list(config, figure_files, here):
     return "".join(parts)
 
 
+def untitled_figures(figure_files, here):
+    """'Figures' and each figure (PNG relative to the page's folder `here`) without a caption: a target's own
+    figures, which have no entry under config's `figures` (the sensitivity and calibrate pages)."""
+    return "<h2>Figures</h2>" + "".join(
+        f"<figure id='{name}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{name}'></figure>"
+        for name, png in figure_files.items())
+
+
 def cell_text(value):
     """A table cell's text: numbers to 4 significant digits, whole numbers (counts) and numbers of
     10 000 and more in full (a force of 10690 uN, not 1.069e+04), NaN as empty, names as they are."""

@@ -1,7 +1,6 @@
 """The sensitivity target's page (results/report/sensitivity.html): what was run, the emulators' held-out
 check, the Sobol table, the check of the slider page's setting against a full run, and the figures."""
 import html
-import os
 import pathlib
 
 from analysis import html_page
@@ -40,7 +39,5 @@ def write(path, config, study, frame, spec, checks, indices, check_point, figure
              "<h2>The slider page's setting against a full run</h2><p>A setting inside the ranges that is no design "
              "point (studies." + html.escape(study) + ".design.check), run in full and predicted by the emulators.</p>",
              html_page.frame_table(check_point)]
-    parts.append("<h2>Figures</h2>")
-    for name, png in figure_files.items():
-        parts.append(f"<figure id='{name}'><img src='{html.escape(os.path.relpath(png, here))}' alt='{name}'></figure>")
+    parts.append(html_page.untitled_figures(figure_files, here))
     html_page.write_page(path, "cellsim sensitivity", parts)
