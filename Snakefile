@@ -39,6 +39,12 @@ if config.pop("slurm_profile_needs_snakemake_7", False):
         "[--configfile my.yaml]; the rules already give each job threads, mem_mb and runtime (minutes) "
         "from the config's `resources`. See README, 'Running on a SLURM cluster'.")
 
+# A key the schema does not know, or a bad value, stops here in one line naming it ("did you mean ...?");
+# Snakemake's validate, which would print the schema around it, then only sets the schema's defaults.
+from analysis import config_errors as _config_errors  # noqa: E402
+_problem = _config_errors.problem(config, f"{workflow.basedir}/config/schema/config.schema.yaml")
+if _problem:
+    raise WorkflowError(f"config: {_problem}")
 validate(config, "config/schema/config.schema.yaml")
 
 
