@@ -3,6 +3,8 @@
 #   snakemake --cores 2                               the paper's study (config/config.yaml)
 #   snakemake --cores 2 --configfile config/ci.yaml   the same studies, reduced (minutes)
 #   snakemake --cores 2 convergence                   resolution and time-step convergence (not default)
+#   snakemake --cores 2 convergence_fine              the closed cell and its membrane anchor at levels 1-4
+#   snakemake --cores 2 numerical_band                the LJ ladder alone: the default figures' band
 #   snakemake --cores 2 tissue                        a slab of closed cells against one cell (not default;
 #                                                     also tissue_bounds, tissue_check, tissue_large)
 #   snakemake --cores 2 extensions                    elastic-plastic wall, heterogeneous ensembles (not default)
@@ -53,7 +55,7 @@ include: "workflow/rules/common.smk"
 # On a cluster (workflow/profiles/slurm) only the solver runs go to the scheduler; building,
 # bookkeeping, figures and the report are quick and run where snakemake runs.
 localrules: all, build_solver, case_file, dried_case_file, rest_case_file, manifest, aggregate, figure, report, three_js, cell_view, \
-    convergence, aggregate_target, convergence_page, tissue, tissue_bounds, tissue_clusters, tissue_check, \
+    convergence, aggregate_target, convergence_page, numerical_band, convergence_fine, convergence_fine_tables, tissue, tissue_bounds, tissue_clusters, tissue_check, \
     tissue_large, tissue_page, \
     extensions, extensions_page, converged_bounds, converged_bounds_page, design_table, sensitivity, sensitivity_analysis, calibrate, calibration_posterior, calibration_page
 
@@ -62,6 +64,7 @@ include: "workflow/rules/solver.smk"
 include: "workflow/rules/runs.smk"
 include: "workflow/rules/analysis.smk"
 include: "workflow/rules/convergence.smk"
+include: "workflow/rules/convergence_fine.smk"
 include: "workflow/rules/tissue.smk"
 include: "workflow/rules/extensions.smk"
 include: "workflow/rules/bounds.smk"

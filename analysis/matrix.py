@@ -184,6 +184,10 @@ def check(config, root="."):
         for ref, spec in entries.items():
             if not (pathlib.Path(root) / spec["file"]).is_file():
                 raise ConfigError(f"{section}.{ref}.file: no such file '{spec['file']}'")
+    band = config.get("numerical_band")
+    if band and not (pathlib.Path(root) / band["file"]).is_file():
+        raise ConfigError(f"numerical_band.file: no such file '{band['file']}' (snakemake --cores 2 numerical_band "
+                          "writes it under tables/numerical_band/)")
     for fig, spec in config["figures"].items():
         where = f"figures.{fig}"
         for study in figure_studies(spec):

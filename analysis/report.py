@@ -8,13 +8,15 @@ import pathlib
 
 import markdown
 
-from analysis import bounds, columns, comparison, findings
+from analysis import bounds, columns, comparison, findings, numerical_band
 from analysis.claims import METHOD
 from analysis.html_page import cell_text, energy_box, warnings_box, write_page
 from analysis.matrix import figure_cases, figure_studies
 
 
-def caption(config, fig, cases):
+def caption(config, fig, cases, band=None):
+    """The figure's title, studies and cases, reference curves, and with `band` (the LJ ladder's table) the
+    level 1 to 2 change of what it plots."""
     spec = config["figures"][fig]
     names = figure_cases(config, fig, cases)
     studies = ", ".join(f"'{s}'" for s in figure_studies(spec))
@@ -27,20 +29,25 @@ def caption(config, fig, cases):
         text += " Reference curves: " + "; ".join(
             f"{config['references'][r]['label']}: {config['references'][r]['provenance']}" for r in refs) + "."
         text += " No dried-apple reference data are available; none are drawn."
+    if band is not None:
+        text += " " + numerical_band.caption(band, spec, config["numerical_band"]["file"])
     return text
 
 
 def claims_table(rows):
     """The claims with their curve-level verdicts, the old point values beside them, and the method."""
     number = lambda v: "" if v != v else f"{v:.4g}"  # noqa: E731 (NaN: empty)
+    band = any("level_1_to_2" in r for r in rows)  # the LJ ladder's change of what the claim's figure plots
     out = [f"<p>{html.escape(METHOD)}</p>",
            "<table><tr><th>paper's claim</th><th>fig</th><th>measured here</th><th>value</th>"
-           "<th>agree if</th><th>verdict</th><th>point value (strain 0.05)</th><th>note</th></tr>"]
+           "<th>agree if</th><th>verdict</th><th>point value (strain 0.05)</th><th>note</th>"
+           + ("<th>numerical band: level 1 to 2</th>" if band else "") + "</tr>"]
     for r in rows:
         out.append(f"<tr class='{r['verdict'].replace(' ', '-')}'><td>{html.escape(r['claim'])}</td><td>{r['figure']}</td>"
                    f"<td>{html.escape(r['measured'])}</td><td>{number(r['value'])}</td><td>{html.escape(r['threshold'])}</td>"
                    f"<td class='verdict'><b>{r['verdict']}</b></td><td>{number(r.get('point_value', float('nan')))}</td>"
-                   f"<td>{html.escape(str(r.get('note', '')))}</td></tr>")
+                   f"<td>{html.escape(str(r.get('note', '')))}</td>"
+                   + (f"<td>{html.escape(str(r.get('level_1_to_2', '')))}</td>" if band else "") + "</tr>")
     out.append("</table>")
     return "\n".join(out)
 
@@ -64,7 +71,8 @@ def matrix_table(summary, axes, cell_links=None):
     return f"<div class='wide'><table><tr>{head}</tr>{''.join(body)}</table></div>"  # scrolls in its own box
 
 
-def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=(), column_rows=None):
+def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell_pages=(), column_rows=None,
+          band=None):
     """cell_pages: the cases' 3-D pages (analysis/cell_view.py), linked from the run matrix; column_rows:
     this run's claim columns (analysis/columns.py), set beside the other run's claims where given."""
     root = pathlib.Path(root)
@@ -97,7 +105,7 @@ def write(path, config, cases, summary, claim_rows, figure_files, root=".", cell
     for fig, png in figure_files.items():
         rel = os.path.relpath(png, here)
         parts.append(f"<figure id='{fig}'><img src='{html.escape(rel)}' alt='{fig}'>"
-                     f"<figcaption><b>{fig}.</b> {html.escape(caption(config, fig, cases))}</figcaption></figure>")
+                     f"<figcaption><b>{fig}.</b> {html.escape(caption(config, fig, cases, band))}</figcaption></figure>")
     parts.append("<h2>Run matrix</h2>")
     if cell_links:
         parts.append("<p>'view' opens the case in 3-D: the wall as a surface and the fluid as points, turned with the "

@@ -66,6 +66,7 @@ rule report:
         timeseries=f"{OUT}/tables/timeseries.csv",
         figures=expand(f"{OUT}/figures/{{fig}}.png", fig=FIGURES),
         sources=["paper/report_intro.md", "docs/findings.md", "docs/model-closures.md"],
+        band=[config["numerical_band"]["file"]] if "numerical_band" in config else [],  # the LJ ladder's table
         # The other run's claims, once it exists (compare_with): the report sets them beside this run's.
         other_claims=lambda w: [p for p in [comparison.other_claims_file(config)] if p and os.path.exists(p)],
         cells=expand(f"{OUT}/report/cells/{{case}}.html", case=DEFAULT_CASES),
