@@ -31,7 +31,7 @@ def configuration(config):
         trust = ("the pressure coupling: its stresses are converged up to strain 0.05 at level 2 and banded "
                  "beyond (finding 6 below)")
     else:
-        trust = "the pressure coupling at level 1: up to strain 0.05 within 5-16 % of level 2 (finding 6 below)"
+        trust = "the pressure coupling at level 1: up to strain 0.05 within 0-16 % of level 2 (finding 3 below)"
     return coupling, resolution, trust
 
 

@@ -129,3 +129,100 @@ def test_the_dried_state_is_the_drying_tables(docs):
     error = max(abs(float(row[6]) - float(row[7])) / float(row[1]) for row in rows)
     assert error < 0.003  # "to 0.3 % of the turgor"
     quoted_in(docs, "reaches its target to 0.3 % of the turgor", ["docs/findings.md"])
+
+
+def test_level_1_against_level_2_up_to_strain_005(docs):
+    """The pressure ladder at strain 0.05: level 1's offset from level 2 (quoted for level-1 runs) and level 2's
+    change from level 1 (the trust table's evidence that the steps do not shrink everywhere)."""
+    values = ladder(docs)
+    offsets = [values[x, 1][0] / values[x, 2][0] - 1 for x in (1.0, 0.5, 0.1)]
+    changes = [values[x, 2][0] / values[x, 1][0] - 1 for x in (1.0, 0.5, 0.1)]
+    assert (percent_range(offsets), percent_range(changes)) == ("0-16", "0-19")
+    quoted_in(docs, "up to strain 0.05 within 0-16 % of level 2", ["docs/model-closures.md"])
+    quoted_in(docs, "level 1 to 2 moved it 0-19 %", ["README.md"])
+    moved = ", ".join(f"{100 * c:+.1f} %" for c in changes[:2]) + f" and {100 * changes[2]:+.1f} %"
+    quoted_in(docs, f"From level 1 to 2 it moved by {moved}", ["docs/findings.md"])
+    assert abs(changes[0]) < abs(values[1.0, 3][0] / values[1.0, 2][0] - 1)  # the fresh cell's step grew
+
+
+def test_the_volumetric_modulus_ratio_is_its_numbers(docs):
+    """eps 134-203 MPa (closed cell, level 1) against the pressure probes' 0.5-36 MPa."""
+    closures = " ".join(docs["docs/model-closures.md"].split())
+    eps = [float(x) for x in re.search(r"\*\*(\d+) MPa fresh, (\d+) MPa at X/X0 = 0\.5, (\d+) MPa at 0\.1\*\*",
+                                       closures).groups()]
+    low, high = [float(x) for x in re.search(r"measure (\d+(?:\.\d+)?)-(\d+) MPa in plant cells", closures).groups()]
+    ratio = f"{min(eps) / high:.1f}-{max(eps) / low:.0f}"
+    assert ratio == "3.7-406"
+    quoted_in(docs, f"{ratio} times stiffer in volume", ["docs/findings.md"])
+    quoted_in(docs, f"{ratio.replace('-', ' to ')} times stiffer in volume", ["docs/model-closures.md"])
+
+
+def test_the_closed_cell_costs_are_one_number(docs):
+    """Level 3 and level 4 of the quasi-static closed cell: the times measured alone (2026-11-29)."""
+    closures = " ".join(docs["docs/model-closures.md"].split())
+    level_4, level_3 = re.search(r"level 4 \(16 536 wall particles, the finest run\) took (\d+\.\d) min.*?level 3 "
+                                 r"(\d\.\d) min", closures).groups()
+    assert (level_4, level_3) == ("21.0", "3.7")
+    quoted_in(docs, f"Level 3 takes {level_3} min a case, level 4 {float(level_4):.0f} min", ["docs/findings.md"])
+    for name in ("docs/findings.md", "docs/model-closures.md", "README.md"):
+        flat = " ".join(docs[name].split())
+        assert "47 min" not in flat and "about 5 min a case" not in flat, name  # the superseded times
+
+
+def trust_rows(docs):
+    return table(docs["README.md"], "| quantity | strain range | configuration | status |")
+
+
+def test_the_trust_table_says_what_its_tables_say(docs):
+    """Every number in the README's trust table is one a finding or model-closures.md states, no row claims a
+    configuration its table does not hold ('any'), and no row calls a level an upper estimate or converged where
+    the steps do not shrink."""
+    sources = " ".join(" ".join(docs[name].split()) for name in ("docs/findings.md", "docs/model-closures.md"))
+    sources = sources.replace("−", "-")
+    for row in trust_rows(docs):
+        status = row[3]
+        assert row[2] != "any", row
+        assert "upper estimate" not in status, row
+        for number in re.findall(r"-?\d+(?:\.\d+)?(?:e-?\d+)?(?: to -?\d+)?(?:-\d+(?:\.\d+)?)? ?%?", status):
+            number = number.strip()
+            if " to " in number:  # "-11 to -21 %": a fall the findings write as "falls by 11-21 %"
+                number = number.replace("-", "").replace(" to ", "-")
+            if re.fullmatch(r"\d", number) or number.startswith(("0.0", "0.1", "0.2")) and "%" not in number:
+                continue  # a level (1-4) or a strain range, not a measured number
+            assert number in sources, f"trust table row '{row[0]}' quotes {number!r}, which no finding states"
+    energy = {row[2]: row[3] for row in trust_rows(docs) if row[0] == "energy account"}
+    assert "fails" in energy["LJ coupling"] and "9.0 times the plate work" in sources
+
+
+def test_the_lj_ladder_is_its_table(docs, root):
+    """The LJ ladder's table of values in model-closures.md is data/numerical_band/lj_ladder.csv (what the default
+    report's captions quote), and the changes findings 7 and the trust table quote are that table's."""
+    import pandas as pd
+    from analysis import numerical_band
+    band = pd.read_csv(root / "data" / "numerical_band" / "lj_ladder.csv")
+    rows = table(docs["docs/model-closures.md"], "| X/X0 | level | wall / fluid particles | dt ns |")
+    assert len(rows) == len(band) == 9
+    for row, (_, value) in zip(rows, band.iterrows()):
+        assert (float(row[0]), int(row[1])) == (value["dryness"], value["level"])
+        for cell, column, scale in ((row[4], "smoothed_stress_kPa_at_0.05", 1), (row[5], "smoothed_stress_kPa_at_0.10", 1),
+                                    (row[7], "peak_force_top_uN", 1e-3)):
+            assert float(cell) == pytest.approx(value[column] * scale, abs=0.051), (row, column)
+    change = lambda column, low, high: [numerical_band.change(band, column, x, low, high)  # noqa: E731
+                                        for x in numerical_band.DRYNESS]
+    at_005, at_010 = "smoothed_stress_kPa_at_0.05", "smoothed_stress_kPa_at_0.10"
+    pairs = lambda low, high: [f"{100 * a:+.0f} % / {100 * b:+.0f} %"  # noqa: E731
+                               for a, b in zip(change(at_005, low, high), change(at_010, low, high))]
+    one_two, two_three = pairs(1, 2), pairs(2, 3)
+    quoted_in(docs, f"by {one_two[0]} at strains 0.05 / 0.10 (fresh), by {one_two[1]} at X/X0 = 0.5, and by "
+                    f"{one_two[2]} at X/X0 = 0.1", ["docs/findings.md"])
+    quoted_in(docs, f"it moves by {two_three[0]} (fresh), by {two_three[1]} at X/X0 = 0.5, and by {two_three[2]} at "
+                    "X/X0 = 0.1", ["docs/findings.md"])
+    forces = change("peak_force_top_uN", 1, 2) + change("peak_force_top_uN", 2, 3)
+    assert percent_range(forces) == "18-65"
+    quoted_in(docs, "The peak force moves by 18-65 % between every pair of levels", ["docs/findings.md"])
+    quoted_in(docs, "the peak force by 18-65 %", ["README.md"])
+    signed = lambda values: f"{100 * min(values):+.0f} to {100 * max(values):+.0f} %"  # noqa: E731 ("-3 to +10 %")
+    quoted_in(docs, f"from level 1 to 2 the stress moves by {signed(change(at_005, 1, 2))} at strain 0.05 and "
+                    f"{signed(change(at_010, 1, 2))} at 0.10", ["README.md"])
+    quoted_in(docs, f"from level 2 to 3 by {signed(change(at_005, 2, 3))} and {signed(change(at_010, 2, 3))}",
+              ["README.md"])
