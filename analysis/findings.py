@@ -26,7 +26,8 @@ def configuration(config):
     resolution = f"resolution level {level}"
     if coupling == "lennard_jones":
         trust = ("the paper's Lennard-Jones coupling: its stresses depend on the particle count at every strain "
-                 "(findings 6-7 below), so read them as the paper's model, not as converged numbers")
+                 "(findings 6-7 below), so read them as the paper's model, not as converged numbers; at the paper's "
+                 "level 1 each figure's caption and each claim give their band from level 1 to 2 (the LJ ladder)")
     elif level >= 2:
         trust = ("the pressure coupling: its stresses are converged up to strain 0.05 at level 2 and banded "
                  "beyond (finding 6 below)")
