@@ -158,12 +158,12 @@ def test_the_volumetric_modulus_ratio_is_its_numbers(docs):
 
 
 def test_the_closed_cell_costs_are_one_number(docs):
-    """Level 3 and level 4 of the quasi-static closed cell: the times measured alone (2026-11-29)."""
+    """Level 3 and level 4 of the quasi-static closed cell: the times of target convergence_fine (2026-12-08)."""
     closures = " ".join(docs["docs/model-closures.md"].split())
-    level_4, level_3 = re.search(r"level 4 \(16 536 wall particles, the finest run\) took (\d+\.\d) min.*?level 3 "
-                                 r"(\d\.\d) min", closures).groups()
-    assert (level_4, level_3) == ("21.0", "3.7")
-    quoted_in(docs, f"Level 3 takes {level_3} min a case, level 4 {float(level_4):.0f} min", ["docs/findings.md"])
+    level_3, level_4 = re.search(r"Level 3 took \d+ s a case \((\d\.\d) min\), level 4 \d+ s \((\d+\.\d) min\)",
+                                 closures).groups()
+    assert (level_3, level_4) == ("1.8", "11.0")
+    quoted_in(docs, f"Level 3 takes {level_3} min a case, level 4 {level_4} min", ["docs/findings.md"])
     for name in ("docs/findings.md", "docs/model-closures.md", "README.md"):
         flat = " ".join(docs[name].split())
         assert "47 min" not in flat and "about 5 min a case" not in flat, name  # the superseded times
