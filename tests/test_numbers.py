@@ -226,3 +226,25 @@ def test_the_lj_ladder_is_its_table(docs, root):
                     f"{signed(change(at_010, 1, 2))} at 0.10", ["README.md"])
     quoted_in(docs, f"from level 2 to 3 by {signed(change(at_005, 2, 3))} and {signed(change(at_010, 2, 3))}",
               ["README.md"])
+
+
+def test_the_readmes_times_are_the_measurements(root):
+    """Every time the README's table of targets gives as measured names its date, and that time and date are in
+    docs/performance.md, "How long the commands take"; no row keeps a range of superseded measurements."""
+    readme = (root / "README.md").read_text()
+    performance = " ".join((root / "docs" / "performance.md").read_text().split())
+    rows = table(readme, "| command | what it does | time, 2 cores | disk |")
+    assert len(rows) >= 15
+    for command, _, time, disk in rows:
+        if "measured" in time:
+            dates = re.findall(r"20\d\d-\d\d-\d\d", time)
+            assert dates, f"{command}: a measured time without its date"
+            for stamp in dates + re.findall(r"\d+ min \d+ s", time):
+                assert stamp in performance, f"{command}: {stamp} is not in docs/performance.md"
+        assert disk, f"{command}: no disk use"
+    sitting = re.search(r"Measured in one sitting, (20\d\d-\d\d-\d\d)", performance)
+    assert sitting, "performance.md names the sitting's date"
+    for command in ("`snakemake --cores 2`", "`snakemake --cores 2 --configfile config/ci.yaml`",
+                    "`snakemake --cores 2 extensions`", "`scripts/test`"):
+        time = next(row[2] for row in rows if row[0] == command)
+        assert sitting.group(1) in time, f"{command} is not the sitting's time"
