@@ -41,6 +41,7 @@ def small_ladder(cellsim, root, tmp_path_factory):
             for kind in ("wall", "membrane")}
 
 
+@pytest.mark.slow  # four quasi-static runs, about 50 s
 def test_the_ladder_gives_each_level_its_stresses_and_change(small_ladder):
     table = convergence_fine.ladder(small_ladder["wall"])
     assert list(table["level"]) == [1, 2] and list(table["n_wall"]) == [162, 642]
@@ -52,6 +53,7 @@ def test_the_ladder_gives_each_level_its_stresses_and_change(small_ladder):
     assert np.all(np.diff(table.iloc[0][[f"stress_kPa_at_{s:.2f}" for s in convergence_fine.STRAINS]].to_numpy(float)) > 0)
 
 
+@pytest.mark.slow
 def test_the_membrane_is_set_beside_its_solution_at_each_strain(small_ladder):
     table = convergence_fine.membrane(small_ladder["membrane"])
     assert len(table) == 2 * (len(convergence_fine.STRAINS) + 1)  # each strain, and F / (P A_c)
