@@ -73,3 +73,14 @@ def test_a_ladder_table_without_a_quantity_is_refused(tmp_path):
     ladder().drop(columns=["peak_force_top_uN"]).to_csv(path, index=False)
     with pytest.raises(ValueError, match="lacks \\['peak_force_top_uN'\\]"):
         numerical_band.read(path)
+
+
+def test_the_claims_table_shows_the_band_where_the_rows_carry_it(root, config):
+    band = numerical_band.for_run(config, root)
+    row = {"claim": "Fresh cells are stiffer", "figure": "7", "measured": "ratio", "value": 2.3, "threshold": "> 1",
+           "verdict": "agree", "point_value": 2.5, "note": ""}
+    plain = report.claims_table([row])
+    banded = report.claims_table([dict(row, level_1_to_2=numerical_band.claim_band(band, "7", config))])
+    assert "numerical band" not in plain
+    assert "<th>numerical band: level 1 to 2</th>" in banded and "from level 1 to 2, the stress at strain 0.05 by" in banded
+    assert numerical_band.claim_band(band, "11-12", config) == numerical_band.claim_band(band, "11", config)
