@@ -29,8 +29,8 @@ def configuration(config):
                  "(findings 6-7 below), so read them as the paper's model, not as converged numbers; at the paper's "
                  "level 1 each figure's caption and each claim give their band from level 1 to 2 (the LJ ladder)")
     elif level >= 2:
-        trust = ("the pressure coupling: its stresses are converged up to strain 0.05 at level 2 and banded "
-                 "beyond (finding 6 below)")
+        trust = ("the pressure coupling: its stresses hold to 8 % up to strain 0.05 at level 2, a band rather than a "
+                 "converged value (finding 3 below), and are banded beyond (finding 6 below)")
     else:
         trust = "the pressure coupling at level 1: up to strain 0.05 within 0-16 % of level 2 (finding 3 below)"
     return coupling, resolution, trust

@@ -702,7 +702,7 @@ def test_the_reports_findings_count_this_runs_numbers(root):
     config = workflow_config(root, ["config/converged.yaml"])
     assert converged["base"]["coupling"]["model"] == "pressure"
     text = " ".join(findings.this_run(config, summary, verdicts))
-    assert "pressure coupling, resolution level 2" in text and "converged up to strain 0.05" in text
+    assert "pressure coupling, resolution level 2" in text and "hold to 8 % up to strain 0.05" in text and "converged up to" not in text
 
     config = workflow_config(root, ["config/ci.yaml"])  # reduced cells; their compressions stop at 0.1
     summary["end_strain"] = 0.1
